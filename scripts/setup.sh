@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Installs every Debian package hooke needs. Idempotent: packages already present are skipped.
+# Usage: scripts/setup.sh [--meshing] [--bench]
+#   (default)  build, test and report dependencies
+#   --meshing  also gmsh and tetgen, needed only to regenerate the committed meshes in data/meshes
+#   --bench    also Bullet, the benchmark peer of bench/
+set -euo pipefail
+
+core=(
+  build-essential cmake ninja-build pkg-config clang-format
+  libeigen3-dev libsuitesparse-dev libopenblas0-pthread libtbb-dev
+  libcli11-dev libfmt-dev libspdlog-dev nlohmann-json3-dev libtinyobjloader-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  python3-dev python3-numpy python3-pytest python3-matplotlib pybind11-dev
+)
+extra=()
+for arg in "$@"; do
+  case "$arg" in
+    --meshing) extra+=(gmsh tetgen) ;;
+    --bench) extra+=(libbullet-dev) ;;
+    *) echo "setup.sh: unknown option '$arg'" >&2; exit 2 ;;
+  esac
+done
+
+wanted=("${core[@]}" "${extra[@]}")
+missing=()
+for pkg in "${wanted[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$pkg")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup.sh: all ${#wanted[@]} packages present"
+  exit 0
+fi
+
+echo "setup.sh: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

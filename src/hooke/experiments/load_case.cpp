@@ -1,0 +1,102 @@
+#include <cmath>
+#include <hooke/core/error.hpp>
+#include <hooke/experiments/load_case.hpp>
+#include <hooke/fem/elastic_block.hpp>
+#include <hooke/mesh/measure.hpp>
+#include <hooke/mesh/topology.hpp>
+#include <hooke/solve/static_equilibrium.hpp>
+
+namespace hooke::experiments {
+
+LoadKind load_kind_from_name(std::string_view name) {
+  if (name == "stretch") return LoadKind::kStretch;
+  if (name == "compress") return LoadKind::kCompress;
+  if (name == "shear") return LoadKind::kShear;
+  throw InvalidArgument("unknown load case '" + std::string(name) + "' (use stretch, compress or shear)");
+}
+
+std::string_view load_kind_name(LoadKind kind) {
+  switch (kind) {
+    case LoadKind::kStretch: return "stretch";
+    case LoadKind::kCompress: return "compress";
+    case LoadKind::kShear: return "shear";
+  }
+  return "unknown";
+}
+
+LoadCase make_load_case(const mesh::Mesh& mesh, LoadKind kind, double traction_pa, double thickness) {
+  if (!std::isfinite(traction_pa)) throw InvalidArgument("the traction must be a finite number of pascals");
+  const int d = mesh.dim(), up = d - 1;
+  LoadCase lc;
+  lc.kind = kind;
+  lc.traction_pa = traction_pa;
+  lc.direction = VecX::Zero(d);
+  switch (kind) {
+    case LoadKind::kStretch: lc.direction(up) = 1.0; break;
+    case LoadKind::kCompress: lc.direction(up) = -1.0; break;
+    case LoadKind::kShear: lc.direction(d == 2 ? 0 : 1) = 1.0; break;
+  }
+  const double top = mesh.nodes.col(up).maxCoeff(), bottom = mesh.nodes.col(up).minCoeff();
+  const double tol = 1e-6 * mesh::bounding_box_diagonal(mesh);
+  lc.height = top - bottom;
+  for (int i = 0; i < mesh.node_count(); ++i) {
+    if (mesh.nodes(i, up) <= bottom + tol) lc.fixed_nodes.push_back(i);
+    if (mesh.nodes(i, up) >= top - tol) lc.top_nodes.push_back(i);
+  }
+  const RowMatXi facets = mesh::boundary_facets(mesh);
+  const VecX measure = mesh::facet_measures(mesh, facets);
+  lc.nodal_forces = VecX::Zero(d * mesh.node_count());
+  int loaded = 0;
+  for (Eigen::Index f = 0; f < facets.rows(); ++f) {
+    bool on_top = true;
+    for (Eigen::Index k = 0; k < facets.cols(); ++k) on_top = on_top && mesh.nodes(facets(f, k), up) >= top - tol;
+    if (!on_top) continue;
+    ++loaded;
+    const double area = measure(f) * (d == 2 ? thickness : 1.0);
+    lc.top_area += area;
+    const double share = traction_pa * area / static_cast<double>(facets.cols());
+    for (Eigen::Index k = 0; k < facets.cols(); ++k)
+      for (int c = 0; c < d; ++c) lc.nodal_forces(d * facets(f, k) + c) += share * lc.direction(c);
+  }
+  const std::string where = mesh.source.empty() ? std::string("the mesh") : mesh.source;
+  if (loaded == 0) throw InvalidArgument(where + " has no flat top boundary to load");
+  if (lc.fixed_nodes.empty()) throw InvalidArgument(where + " has no bottom boundary to clamp");
+  return lc;
+}
+
+void apply(const LoadCase& load, model::Problem& problem) {
+  if (load.nodal_forces.size() != problem.model->dof_count())
+    throw InvalidArgument("load case and problem belong to different meshes");
+  model::fix_nodes(problem, load.fixed_nodes);
+  problem.external_force = load.nodal_forces;
+  for (Eigen::Index i = 0; i < problem.external_force.size(); ++i)
+    if (problem.fixed_dofs[static_cast<size_t>(i)]) problem.external_force(i) = 0.0;
+}
+
+double mean_top_displacement(const LoadCase& load, const model::Problem& problem, const VecX& positions) {
+  const int d = problem.model->dim();
+  const VecX u = positions - problem.model->rest_positions();
+  double sum = 0.0;
+  for (int node : load.top_nodes) sum += u.segment(d * node, d).dot(load.direction);
+  return load.top_nodes.empty() ? 0.0 : sum / static_cast<double>(load.top_nodes.size());
+}
+
+double traction_for_strain(const mesh::Mesh& mesh, const material::Material& material, LoadKind kind,
+                           double strain) {
+  if (!(strain > 0.0) || !std::isfinite(strain)) throw InvalidArgument("the strain must be a positive number");
+  material::Material linear = material;
+  linear.law = material::Law::kLinear;
+  const VecX rest = Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size());
+  auto m = std::make_shared<model::Model>(mesh.dim(), rest);
+  m->add(fem::make_elastic_block(mesh, linear));
+  model::Problem problem = model::make_problem(m);
+  const LoadCase unit = make_load_case(mesh, kind, 1.0, material.thickness);
+  apply(unit, problem);
+  const solve::StaticResult r = solve::linear_static(problem);
+  solve::require_converged(r.report);
+  const double u = mean_top_displacement(unit, problem, r.positions);
+  if (!(u > 0.0)) throw SolverFailure("the unit load produced no displacement along the load direction");
+  return strain * unit.height / u;
+}
+
+}  // namespace hooke::experiments

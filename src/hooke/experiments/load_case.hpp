@@ -1,0 +1,54 @@
+#pragma once
+/// The papers' load cases (Lloyd et al. 2007, Sec. 5): bottom clamped, a uniform dead traction on the top.
+#include <hooke/material/material.hpp>
+#include <hooke/mesh/mesh.hpp>
+#include <hooke/model/problem.hpp>
+#include <string_view>
+#include <vector>
+
+namespace hooke::experiments {
+
+/// Stable names: "stretch", "compress", "shear".
+enum class LoadKind {
+  kStretch,   ///< traction along +y (2D) / +z (3D) on the top boundary
+  kCompress,  ///< traction along -y / -z
+  kShear      ///< tangential traction along +x (2D) / +y (3D), as in Lloyd Sec. 5
+};
+
+LoadKind load_kind_from_name(std::string_view name);  ///< @throws InvalidArgument
+std::string_view load_kind_name(LoadKind kind);
+
+/// Boundary conditions of one load case on one mesh.
+struct LoadCase {
+  LoadKind kind = LoadKind::kStretch;
+  double traction_pa = 0.0;       ///< traction magnitude per reference area, Pa (N/m^2)
+  std::vector<int> fixed_nodes;   ///< bottom boundary nodes (min y in 2D, min z in 3D), clamped
+  std::vector<int> top_nodes;     ///< nodes on the loaded top boundary
+  VecX nodal_forces;              ///< consistent nodal forces, N, flat (dim * #V)
+  VecX direction;                 ///< unit load direction (dim)
+  double height = 0.0;            ///< extent of the mesh along the vertical axis, m
+  double top_area = 0.0;          ///< loaded reference area, m^2 (edge length x thickness in 2D)
+};
+
+/// Finds the top and bottom boundaries (nodes within 1e-6 of the bounding-box diagonal from max / min of
+/// the vertical coordinate) and the consistent nodal forces of a uniform traction on the top facets
+/// (each node of a linear facet receives traction x facet area / facet node count).
+/// @param mesh       validated triangle, quad or tet mesh, m
+/// @param thickness  plate thickness in 2D, m (ignored in 3D)
+/// @throws InvalidArgument if no top facet or no bottom node is found, or traction is not finite
+LoadCase make_load_case(const mesh::Mesh& mesh, LoadKind kind, double traction_pa, double thickness = 1.0);
+
+/// Applies a load case to a problem on the same mesh: clamps the fixed nodes and sets the forces.
+void apply(const LoadCase& load, model::Problem& problem);
+
+/// Mean displacement of the top nodes along the load direction, m.
+double mean_top_displacement(const LoadCase& load, const model::Problem& problem, const VecX& positions);
+
+/// The traction (Pa) at which the linear FEM's mean top displacement along the load equals
+/// strain x height (the papers' "~12 % stretch"). One linear solve with a unit traction, scaled.
+/// @param material  the material (its law is ignored: the linear FEM decides)
+/// @pre strain > 0
+double traction_for_strain(const mesh::Mesh& mesh, const material::Material& material, LoadKind kind,
+                           double strain);
+
+}  // namespace hooke::experiments

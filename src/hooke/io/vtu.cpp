@@ -1,0 +1,190 @@
+#include <hooke/core/atomic_file.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/io/detail/assemble.hpp>
+#include <hooke/io/detail/reader.hpp>
+#include <hooke/io/vtu.hpp>
+#include <iomanip>
+#include <map>
+
+namespace hooke::io {
+namespace {
+
+int vtk_cell_type(mesh::ElementKind kind) {
+  switch (kind) {
+    case mesh::ElementKind::kQuad: return 9;
+    case mesh::ElementKind::kTet: return 10;
+    default: return 5;
+  }
+}
+
+void write_field(std::ostream& out, const Field& f, Eigen::Index count, int dim) {
+  if (f.values.size() != count * f.components)
+    throw InvalidArgument("field '" + f.name + "' has " + std::to_string(f.values.size()) + " values, expected " +
+                          std::to_string(count * f.components));
+  const int comps = (f.components == 2 && dim == 2) ? 3 : f.components;
+  out << "        <DataArray type=\"Float64\" Name=\"" << f.name << "\" NumberOfComponents=\"" << comps
+      << "\" format=\"ascii\">\n";
+  for (Eigen::Index i = 0; i < count; ++i) {
+    out << "         ";
+    for (int c = 0; c < comps; ++c) out << ' ' << (c < f.components ? f.values(f.components * i + c) : 0.0);
+    out << '\n';
+  }
+  out << "        </DataArray>\n";
+}
+
+// Attributes of an XML start tag: name="value" pairs.
+std::map<std::string, std::string> attributes(const std::string& tag) {
+  std::map<std::string, std::string> out;
+  size_t p = 0;
+  while ((p = tag.find('=', p)) != std::string::npos) {
+    size_t k = p;
+    while (k > 0 && tag[k - 1] == ' ') --k;
+    size_t ks = k;
+    while (ks > 0 && tag[ks - 1] != ' ' && tag[ks - 1] != '<') --ks;
+    size_t q1 = tag.find_first_of("\"'", p);
+    if (q1 == std::string::npos) break;
+    size_t q2 = tag.find(tag[q1], q1 + 1);
+    if (q2 == std::string::npos) break;
+    out[tag.substr(ks, k - ks)] = tag.substr(q1 + 1, q2 - q1 - 1);
+    p = q2 + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+void write_vtu(const std::filesystem::path& path, const mesh::Mesh& m, const std::vector<Field>& point_data,
+               const std::vector<Field>& cell_data) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    const int nv = m.node_count(), ne = m.element_count(), npe = mesh::nodes_per_element(m.kind);
+    out << std::setprecision(17);
+    out << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+        << "  <UnstructuredGrid>\n"
+        << "    <Piece NumberOfPoints=\"" << nv << "\" NumberOfCells=\"" << ne << "\">\n"
+        << "      <PointData>\n";
+    for (const Field& f : point_data) write_field(out, f, nv, m.dim());
+    out << "      </PointData>\n      <CellData>\n";
+    Field region{"region", 1, m.region.size() == ne ? m.region.cast<double>().eval() : VecX::Zero(ne)};
+    write_field(out, region, ne, m.dim());
+    for (const Field& f : cell_data) write_field(out, f, ne, m.dim());
+    out << "      </CellData>\n      <Points>\n"
+        << "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (int i = 0; i < nv; ++i)
+      out << "          " << m.nodes(i, 0) << ' ' << m.nodes(i, 1) << ' ' << (m.dim() == 3 ? m.nodes(i, 2) : 0.0)
+          << '\n';
+    out << "        </DataArray>\n      </Points>\n      <Cells>\n"
+        << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    for (int e = 0; e < ne; ++e) {
+      out << "         ";
+      for (int k = 0; k < npe; ++k) out << ' ' << m.elements(e, k);
+      out << '\n';
+    }
+    out << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+    for (int e = 0; e < ne; ++e) out << "          " << npe * (e + 1) << '\n';
+    out << "        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+    for (int e = 0; e < ne; ++e) out << "          " << vtk_cell_type(m.kind) << '\n';
+    out << "        </DataArray>\n      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+  });
+}
+
+VtuContents read_vtu(const std::filesystem::path& path) {
+  detail::Reader r = detail::Reader::open(path);
+  const std::string& s = r.data();
+  if (s.find("<VTKFile") == std::string::npos || s.find("UnstructuredGrid") == std::string::npos)
+    r.fail("not a VTK XML unstructured grid (no <VTKFile type=\"UnstructuredGrid\">)");
+  if (s.find("<AppendedData") != std::string::npos) r.fail("appended binary data is not supported; write ASCII VTU");
+  if (s.find("<Piece", s.find("<Piece") + 1) != std::string::npos) r.fail("multi-piece VTU files are not supported");
+
+  struct Array {
+    std::string name, section;
+    int components = 1;
+    std::vector<double> values;
+  };
+  std::vector<Array> arrays;
+  std::string section;
+  size_t pos = 0;
+  while ((pos = s.find('<', pos)) != std::string::npos) {
+    const size_t close = s.find('>', pos);
+    if (close == std::string::npos) break;
+    const std::string tag = s.substr(pos, close - pos + 1);
+    for (const char* sec : {"PointData", "CellData", "Points", "Cells"}) {
+      if (tag.rfind(std::string("<") + sec, 0) == 0 && (tag[std::string(sec).size() + 1] == '>' || tag[std::string(sec).size() + 1] == ' '))
+        section = sec;
+    }
+    if (tag.rfind("<DataArray", 0) == 0) {
+      auto attr = attributes(tag);
+      if (attr.count("format") && attr["format"] != "ascii") {
+        r.fail_at_offset(pos, "DataArray '" + attr["Name"] + "' has format=\"" + attr["format"] +
+                "\"; only ASCII VTU is read (write it with hooke or choose ASCII in ParaView)");
+      }
+      const size_t end = s.find("</DataArray>", close);
+      if (end == std::string::npos) {
+        r.fail_at_offset(pos, "DataArray without </DataArray>");
+      }
+      Array a;
+      a.name = attr.count("Name") ? attr["Name"] : "";
+      a.section = section;
+      a.components = attr.count("NumberOfComponents") ? std::stoi(attr["NumberOfComponents"]) : 1;
+      detail::Reader body(r.name(), s.substr(0, end));
+      body.skip_bytes(close + 1, "");
+      while (true) {
+        body.skip_space();
+        if (body.at_end()) break;
+        a.values.push_back(body.number("a data value"));
+      }
+      arrays.push_back(std::move(a));
+      pos = end;
+    } else {
+      pos = close;
+    }
+  }
+  const Array *points = nullptr, *conn = nullptr, *offsets = nullptr, *types = nullptr;
+  for (const Array& a : arrays) {
+    if (a.section == "Points") points = &a;
+    if (a.section == "Cells" && a.name == "connectivity") conn = &a;
+    if (a.section == "Cells" && a.name == "offsets") offsets = &a;
+    if (a.section == "Cells" && a.name == "types") types = &a;
+  }
+  if (!points || !conn || !offsets || !types) r.fail("VTU file lacks Points or Cells arrays");
+  if (points->values.size() % 3 != 0) r.fail("Points array size is not a multiple of 3");
+  const Eigen::Index nv = static_cast<Eigen::Index>(points->values.size() / 3);
+  RowMatX nodes(nv, 3);
+  for (Eigen::Index i = 0; i < nodes.size(); ++i) nodes.data()[i] = points->values[static_cast<size_t>(i)];
+  detail::RawElements raw;
+  size_t start = 0;
+  if (offsets->values.size() != types->values.size()) r.fail("offsets and types differ in length");
+  for (size_t c = 0; c < types->values.size(); ++c) {
+    const size_t stop = static_cast<size_t>(offsets->values[c]);
+    const int type = static_cast<int>(types->values[c]);
+    if (stop > conn->values.size() || stop < start) r.fail("offsets do not match the connectivity array");
+    std::vector<int> v;
+    for (size_t k = start; k < stop; ++k) v.push_back(static_cast<int>(conn->values[k]));
+    start = stop;
+    if (type == 5 && v.size() == 3) {
+      raw.triangles.push_back({v[0], v[1], v[2]});
+    } else if (type == 9 && v.size() == 4) {
+      raw.quads.push_back({v[0], v[1], v[2], v[3]});
+    } else if (type == 10 && v.size() == 4) {
+      raw.tets.push_back({v[0], v[1], v[2], v[3]});
+    } else if (type != 1 && type != 3) {  // vertices and lines are skipped
+      r.fail("cell " + std::to_string(c) + " has VTK type " + std::to_string(type) +
+             " (hooke reads triangles 5, quads 9 and tets 10)");
+    }
+  }
+  VtuContents out;
+  out.mesh = detail::assemble(r.name(), nodes, std::move(raw));
+  const Eigen::Index ne = out.mesh.element_count();
+  for (const Array& a : arrays) {
+    if (a.section != "PointData" && a.section != "CellData") continue;
+    Field f{a.name, a.components, Eigen::Map<const VecX>(a.values.data(), static_cast<Eigen::Index>(a.values.size()))};
+    if (a.section == "CellData" && a.name == "region" && f.values.size() == ne) {
+      out.mesh.region = f.values.cast<int>();
+      continue;
+    }
+    (a.section == "PointData" ? out.point_data : out.cell_data).push_back(std::move(f));
+  }
+  return out;
+}
+
+}  // namespace hooke::io

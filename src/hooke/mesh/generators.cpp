@@ -1,0 +1,177 @@
+#include <hooke/mesh/generators.hpp>
+
+#include <cmath>
+#include <hooke/core/error.hpp>
+#include <hooke/mesh/measure.hpp>
+#include <map>
+#include <vector>
+
+namespace hooke::mesh {
+namespace {
+
+void require(bool ok, const char* what) {
+  if (!ok) throw InvalidArgument(what);
+}
+
+RowMatXi to_rows(const std::vector<int>& flat, int cols) {
+  RowMatXi m(static_cast<Eigen::Index>(flat.size()) / cols, cols);
+  for (Eigen::Index i = 0; i < m.size(); ++i) m.data()[i] = flat[static_cast<size_t>(i)];
+  return m;
+}
+
+RowMatX to_rows(const std::vector<double>& flat, int cols) {
+  RowMatX m(static_cast<Eigen::Index>(flat.size()) / cols, cols);
+  for (Eigen::Index i = 0; i < m.size(); ++i) m.data()[i] = flat[static_cast<size_t>(i)];
+  return m;
+}
+
+}  // namespace
+
+Mesh equilateral_membrane(int rows, int long_row, double edge) {
+  require(rows >= 2 && long_row >= 2 && edge > 0.0, "equilateral_membrane: needs rows >= 2, long_row >= 2, edge > 0");
+  const double dy = edge * std::sqrt(3.0) / 2.0;
+  std::vector<double> xy;
+  std::vector<int> first(rows + 1, 0);
+  for (int r = 0; r < rows; ++r) {
+    const bool is_long = r % 2 == 0;
+    const int count = is_long ? long_row : long_row - 1;
+    first[r] = static_cast<int>(xy.size() / 2);
+    for (int c = 0; c < count; ++c) {
+      xy.push_back((c + (is_long ? 0.0 : 0.5)) * edge);
+      xy.push_back(r * dy);
+    }
+  }
+  std::vector<int> tri;
+  for (int r = 0; r + 1 < rows; ++r) {
+    const int lo = first[r], hi = first[r + 1];
+    if (r % 2 == 0) {  // long row below, short row above
+      for (int c = 0; c + 1 < long_row; ++c) tri.insert(tri.end(), {lo + c, lo + c + 1, hi + c});
+      for (int c = 0; c + 2 < long_row; ++c) tri.insert(tri.end(), {lo + c + 1, hi + c + 1, hi + c});
+    } else {  // short row below, long row above
+      for (int c = 0; c + 1 < long_row; ++c) tri.insert(tri.end(), {hi + c, lo + c, hi + c + 1});
+      for (int c = 0; c + 2 < long_row; ++c) tri.insert(tri.end(), {lo + c, lo + c + 1, hi + c + 1});
+    }
+  }
+  return make_mesh(ElementKind::kTriangle, to_rows(xy, 2), to_rows(tri, 3), "equilateral membrane");
+}
+
+Mesh hexagon_membrane(int rings, double side) {
+  require(rings >= 1 && side > 0.0, "hexagon_membrane: needs rings >= 1, side > 0");
+  const double h = side / rings;
+  const Vec2 a1(h, 0.0), a2(h / 2.0, h * std::sqrt(3.0) / 2.0);
+  std::map<std::pair<int, int>, int> id;
+  std::vector<double> xy;
+  auto inside = [&](int i, int j) { return std::abs(i) <= rings && std::abs(j) <= rings && std::abs(i + j) <= rings; };
+  for (int j = -rings; j <= rings; ++j)
+    for (int i = -rings; i <= rings; ++i)
+      if (inside(i, j)) {
+        id[{i, j}] = static_cast<int>(xy.size() / 2);
+        const Vec2 p = i * a1 + j * a2;
+        xy.push_back(p.x());
+        xy.push_back(p.y());
+      }
+  std::vector<int> tri;
+  for (int j = -rings; j <= rings; ++j)
+    for (int i = -rings; i <= rings; ++i) {
+      if (inside(i, j) && inside(i + 1, j) && inside(i, j + 1))
+        tri.insert(tri.end(), {id[{i, j}], id[{i + 1, j}], id[{i, j + 1}]});
+      if (inside(i + 1, j) && inside(i + 1, j + 1) && inside(i, j + 1))
+        tri.insert(tri.end(), {id[{i + 1, j}], id[{i + 1, j + 1}], id[{i, j + 1}]});
+    }
+  return make_mesh(ElementKind::kTriangle, to_rows(xy, 2), to_rows(tri, 3), "hexagon membrane");
+}
+
+Mesh rectangle_quads(double width, double height, int nx, int ny) {
+  require(nx >= 1 && ny >= 1 && width > 0.0 && height > 0.0, "rectangle_quads: needs nx, ny >= 1 and a positive size");
+  std::vector<double> xy;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) xy.insert(xy.end(), {width * i / nx, height * j / ny});
+  std::vector<int> quads;
+  auto id = [&](int i, int j) { return i + (nx + 1) * j; };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) quads.insert(quads.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  return make_mesh(ElementKind::kQuad, to_rows(xy, 2), to_rows(quads, 4), "rectangle (quads)");
+}
+
+Mesh rectangle_triangles(double width, double height, int nx, int ny, Diagonal diagonal) {
+  Mesh quads = rectangle_quads(width, height, nx, ny);
+  std::vector<int> tri;
+  for (int e = 0; e < quads.element_count(); ++e) {
+    const auto q = quads.elements.row(e);
+    const int i = e % nx, j = e / nx;
+    const bool rising = diagonal == Diagonal::kRising || (diagonal == Diagonal::kAlternating && (i + j) % 2 == 0);
+    if (rising) {
+      tri.insert(tri.end(), {q(0), q(1), q(2), q(0), q(2), q(3)});
+    } else {
+      tri.insert(tri.end(), {q(0), q(1), q(3), q(1), q(2), q(3)});
+    }
+  }
+  return make_mesh(ElementKind::kTriangle, std::move(quads.nodes), to_rows(tri, 3), "rectangle (triangles)");
+}
+
+Mesh tet_box(double lx, double ly, double lz, int nx, int ny, int nz) {
+  require(nx >= 1 && ny >= 1 && nz >= 1 && lx > 0.0 && ly > 0.0 && lz > 0.0,
+          "tet_box: needs nx, ny, nz >= 1 and a positive size");
+  std::vector<double> xyz;
+  xyz.reserve(static_cast<size_t>(3) * (nx + 1) * (ny + 1) * (nz + 1));
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i) xyz.insert(xyz.end(), {lx * i / nx, ly * j / ny, lz * k / nz});
+  auto id = [&](int i, int j, int k) { return i + (nx + 1) * (j + (ny + 1) * k); };
+  static constexpr int kPerm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  std::vector<int> tets;
+  tets.reserve(static_cast<size_t>(24) * nx * ny * nz);
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        auto corner = [&](int bits) { return id(i + (bits & 1), j + ((bits >> 1) & 1), k + ((bits >> 2) & 1)); };
+        for (const auto& p : kPerm) {
+          const int b1 = 1 << p[0], b2 = b1 | (1 << p[1]);
+          // Even permutations of the axes give positive tets in this node order, odd ones negative.
+          const bool even = (p[0] + 1) % 3 == p[1];
+          if (even) {
+            tets.insert(tets.end(), {corner(0), corner(b1), corner(b2), corner(7)});
+          } else {
+            tets.insert(tets.end(), {corner(0), corner(b2), corner(b1), corner(7)});
+          }
+        }
+      }
+  return make_mesh(ElementKind::kTet, to_rows(xyz, 3), to_rows(tets, 4), "tet box");
+}
+
+Mesh cube_surface(int n, double size) {
+  require(n >= 1 && size > 0.0, "cube_surface: needs n >= 1 and size > 0");
+  std::map<std::array<int, 3>, int> id;
+  std::vector<double> xyz;
+  auto node = [&](std::array<int, 3> c) {
+    auto [it, inserted] = id.try_emplace(c, static_cast<int>(xyz.size() / 3));
+    if (inserted)
+      for (int a = 0; a < 3; ++a) xyz.push_back(size * c[static_cast<size_t>(a)] / n);
+    return it->second;
+  };
+  std::vector<int> tri;
+  for (int d = 0; d < 3; ++d) {
+    const int u = (d + 1) % 3, v = (d + 2) % 3;  // (u, v, d) right-handed
+    for (int side = 0; side <= 1; ++side) {
+      for (int a = 0; a < n; ++a)
+        for (int b = 0; b < n; ++b) {
+          auto at = [&](int da, int db) {
+            std::array<int, 3> c{};
+            c[static_cast<size_t>(d)] = side * n;
+            c[static_cast<size_t>(u)] = a + da;
+            c[static_cast<size_t>(v)] = b + db;
+            return node(c);
+          };
+          const int p00 = at(0, 0), p10 = at(1, 0), p11 = at(1, 1), p01 = at(0, 1);
+          if (side == 1) {
+            tri.insert(tri.end(), {p00, p10, p11, p00, p11, p01});
+          } else {
+            tri.insert(tri.end(), {p00, p11, p10, p00, p01, p11});
+          }
+        }
+    }
+  }
+  return make_mesh(ElementKind::kSurfaceTriangle, to_rows(xyz, 3), to_rows(tri, 3), "cube surface");
+}
+
+}  // namespace hooke::mesh

@@ -1,0 +1,43 @@
+#pragma once
+/// Structured meshes of the papers' test objects (Lloyd et al. 2007, Sec. 5; Arnab & Raja, Table 1).
+#include <hooke/mesh/mesh.hpp>
+
+namespace hooke::mesh {
+
+/// Planar membrane of equilateral triangles: `rows` rows of nodes, alternating `long_row` nodes and
+/// `long_row - 1` nodes (the short rows centred), edge length `edge` m, bottom row at y = 0.
+/// rows = 7, long_row = 6, edge = 0.01 gives Lloyd Sec. 5.1's membrane: 39 nodes, 92 edges, 5.2 cm high.
+/// @pre rows >= 2, long_row >= 2, edge > 0
+Mesh equilateral_membrane(int rows, int long_row, double edge);
+
+/// Regular hexagon of equilateral triangles, `rings` triangles from the centre to each side, side length
+/// `side` m, centred at the origin with two sides horizontal (Lloyd Fig. 3's hexagon).
+/// @pre rings >= 1, side > 0
+Mesh hexagon_membrane(int rings, double side);
+
+/// Rectangle [0, width] x [0, height] split into nx x ny axis-aligned quads (counter-clockwise).
+/// @pre nx, ny >= 1; width, height > 0 (m)
+Mesh rectangle_quads(double width, double height, int nx, int ny);
+
+/// How each cell of a rectangle is split into two triangles.
+enum class Diagonal {
+  kRising,      ///< every cell split along its (0,0)-(1,1) diagonal
+  kFalling,     ///< every cell split along its (1,0)-(0,1) diagonal
+  kAlternating  ///< checkerboard of the two (a "union jack"-free symmetric pattern)
+};
+
+/// Rectangle [0, width] x [0, height] split into nx x ny cells of two triangles each.
+/// @pre nx, ny >= 1; width, height > 0 (m)
+Mesh rectangle_triangles(double width, double height, int nx, int ny, Diagonal diagonal = Diagonal::kAlternating);
+
+/// Box [0, lx] x [0, ly] x [0, lz] split into nx x ny x nz cubes of six tets each (all sharing the cube's
+/// main diagonal, so neighbouring cubes conform). (nx+1)(ny+1)(nz+1) nodes, 6 nx ny nz positive tets.
+/// @pre n* >= 1; l* > 0 (m)
+Mesh tet_box(double lx, double ly, double lz, int nx, int ny, int nz);
+
+/// Closed surface of the cube [0, size]^3 with n x n squares per face, each split into two triangles,
+/// oriented with outward normals: 6 n^2 + 2 nodes (602, 1352, 2402 for n = 10, 15, 20), 12 n^2 triangles.
+/// @pre n >= 1, size > 0 (m)
+Mesh cube_surface(int n, double size);
+
+}  // namespace hooke::mesh

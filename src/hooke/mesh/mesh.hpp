@@ -1,0 +1,45 @@
+#pragma once
+/// Mesh: nodes plus elements of one kind. Coordinates in metres.
+#include <hooke/core/types.hpp>
+#include <string>
+#include <string_view>
+
+namespace hooke::mesh {
+
+/// The element kinds hooke handles. The coordinate dimension follows from the kind.
+enum class ElementKind {
+  kTriangle,         ///< 3-node triangle in the plane (dim 2)
+  kQuad,             ///< 4-node bilinear quadrilateral in the plane (dim 2), nodes in cyclic order
+  kTet,              ///< 4-node tetrahedron (dim 3)
+  kSurfaceTriangle,  ///< 3-node triangle of a surface embedded in 3D (dim 3)
+};
+
+/// Nodes per element of `kind` (3 or 4).
+int nodes_per_element(ElementKind kind);
+/// Coordinate dimension of `kind` (2 or 3).
+int dimension(ElementKind kind);
+/// Stable lower-case name: "triangle", "quad", "tet", "surface-triangle".
+std::string_view element_kind_name(ElementKind kind);
+
+/// A mesh of one element kind.
+struct Mesh {
+  ElementKind kind = ElementKind::kTet;
+  RowMatX nodes;       ///< #V x dim node positions, m
+  RowMatXi elements;   ///< #E x nodes_per_element(kind) 0-based node indices
+  Eigen::VectorXi region;  ///< #E region (physical group) tag per element; 0 where the file has none
+  std::string source;  ///< file name or generator name, used in error messages
+
+  int dim() const { return dimension(kind); }
+  int node_count() const { return static_cast<int>(nodes.rows()); }
+  int element_count() const { return static_cast<int>(elements.rows()); }
+};
+
+/// Builds a mesh from arrays, filling `region` with zeros.
+/// @param nodes     #V x dimension(kind) positions, m
+/// @param elements  #E x nodes_per_element(kind) 0-based indices
+Mesh make_mesh(ElementKind kind, RowMatX nodes, RowMatXi elements, std::string source = "");
+
+/// "tet 412 of cylinder.msh": how messages name one element (0-based index in file order).
+std::string element_label(const Mesh& mesh, int element);
+
+}  // namespace hooke::mesh

@@ -1,0 +1,33 @@
+#include <hooke/core/error.hpp>
+#include <hooke/model/model.hpp>
+
+namespace hooke::model {
+
+Model::Model(int dim, VecX rest_positions) : m_dim(dim), m_rest(std::move(rest_positions)) {
+  if (dim != 2 && dim != 3) throw InvalidArgument("Model: dim must be 2 or 3");
+  if (m_rest.size() % dim != 0) throw InvalidArgument("Model: rest positions are not a multiple of dim");
+}
+
+void Model::add(std::unique_ptr<TermBlock> block) { m_blocks.push_back(std::move(block)); }
+
+double Model::energy(const Eigen::Ref<const VecX>& x) const {
+  double e = 0.0;
+  for (const auto& b : m_blocks) e += b->energy(x);
+  return e;
+}
+
+VecX Model::gradient(const Eigen::Ref<const VecX>& x) const {
+  VecX g = VecX::Zero(x.size());
+  for (const auto& b : m_blocks) b->add_gradient(x, g);
+  return g;
+}
+
+SparseMatrix Model::hessian(const Eigen::Ref<const VecX>& x, bool project_psd) const {
+  std::vector<Triplet> triplets;
+  for (const auto& b : m_blocks) b->add_hessian(x, triplets, project_psd);
+  SparseMatrix h(x.size(), x.size());
+  h.setFromTriplets(triplets.begin(), triplets.end());
+  return h;
+}
+
+}  // namespace hooke::model

@@ -1,0 +1,39 @@
+#pragma once
+/// A model: rest positions plus a few term blocks (DESIGN.md: "the model is data").
+#include <hooke/core/types.hpp>
+#include <hooke/model/term_block.hpp>
+#include <memory>
+#include <vector>
+
+namespace hooke::model {
+
+class Model {
+ public:
+  /// @param dim             2 or 3
+  /// @param rest_positions  flat node-major rest positions, m (size dim * #V)
+  Model(int dim, VecX rest_positions);
+
+  /// Adds a block; the model owns it.
+  void add(std::unique_ptr<TermBlock> block);
+
+  int dim() const { return m_dim; }
+  int node_count() const { return static_cast<int>(m_rest.size()) / m_dim; }
+  int dof_count() const { return static_cast<int>(m_rest.size()); }
+  /// Flat rest positions, m.
+  const VecX& rest_positions() const { return m_rest; }
+  const std::vector<std::unique_ptr<TermBlock>>& blocks() const { return m_blocks; }
+
+  /// Total elastic energy at x, J.
+  double energy(const Eigen::Ref<const VecX>& x) const;
+  /// dE/dx at x, N.
+  VecX gradient(const Eigen::Ref<const VecX>& x) const;
+  /// d2E/dx2 at x, N/m, assembled (dof_count x dof_count, symmetric).
+  SparseMatrix hessian(const Eigen::Ref<const VecX>& x, bool project_psd = false) const;
+
+ private:
+  int m_dim;
+  VecX m_rest;
+  std::vector<std::unique_ptr<TermBlock>> m_blocks;
+};
+
+}  // namespace hooke::model

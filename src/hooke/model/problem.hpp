@@ -1,0 +1,33 @@
+#pragma once
+/// A static problem: a model, the nodes held fixed, and dead external forces.
+#include <hooke/core/types.hpp>
+#include <hooke/model/model.hpp>
+#include <memory>
+#include <vector>
+
+namespace hooke::model {
+
+struct Problem {
+  std::shared_ptr<const Model> model;  ///< the body
+  std::vector<char> fixed_dofs;        ///< per DOF: 1 where the position is prescribed (size model->dof_count())
+  VecX prescribed_positions;           ///< positions of fixed DOFs, m (entries of free DOFs ignored); rest if empty
+  VecX external_force;                 ///< dead nodal forces, N (size dof_count; zero where fixed)
+};
+
+/// A problem with every DOF free, no forces, fixed DOFs at their rest positions.
+Problem make_problem(std::shared_ptr<const Model> model);
+
+/// Fixes all DOFs of `nodes` at their rest positions.
+void fix_nodes(Problem& problem, const std::vector<int>& nodes);
+
+/// Indices of the free DOFs of `problem` that carry stiffness: fixed DOFs and DOFs of nodes on which the
+/// model's Hessian at rest has an empty diagonal (nodes in no element) are excluded.
+std::vector<int> free_dofs(const Problem& problem);
+
+/// Total potential energy Pi(x) = E(x) - f . (x - X), J, at load factor `load_factor` on f.
+double potential_energy(const Problem& problem, const Eigen::Ref<const VecX>& x, double load_factor = 1.0);
+
+/// Starting positions: rest positions with the prescribed positions of fixed DOFs applied.
+VecX initial_positions(const Problem& problem);
+
+}  // namespace hooke::model

@@ -1,0 +1,76 @@
+#pragma once
+/// Static equilibrium of a Problem: the linear solve K u = f, and Newton's method on the total potential
+/// energy with line search, load stepping and a stability check of every accepted state.
+#include <hooke/model/problem.hpp>
+#include <hooke/solve/sparse_cholesky.hpp>
+#include <string>
+#include <vector>
+
+namespace hooke::solve {
+
+enum class SolveStatus {
+  kConverged,     ///< a stable equilibrium at the full load
+  kNotConverged,  ///< Newton failed even with the smallest load step; the state is the last converged one
+  kUnstable,      ///< stability was lost at `critical_load_factor`; the state is the last stable one
+  kSingular       ///< the stiffness on the free DOFs is singular (the body is not held)
+};
+
+/// Stable name: "converged", "not-converged", "unstable", "singular".
+std::string_view status_name(SolveStatus status);
+
+/// What a static solve did. Numbers, never exceptions: see require_converged().
+struct SolveReport {
+  SolveStatus status = SolveStatus::kNotConverged;
+  int iterations = 0;                 ///< Newton iterations over all load steps (1 for the linear solve)
+  int load_steps = 0;                 ///< accepted load steps
+  double load_factor = 0.0;           ///< load factor of the returned state (1 = the full load)
+  double residual = 0.0;              ///< norm of the free-DOF force residual at the returned state, N
+  double reference_force = 0.0;       ///< norm of the applied forces, N (the residual's scale)
+  double min_eigenvalue = 0.0;        ///< smallest tangent eigenvalue on the free DOFs at the returned state, N/m
+  double critical_load_factor = -1.0; ///< load factor where stability is lost, or -1
+  int free_dofs = 0;                  ///< number of unknowns
+  double assembly_seconds = 0.0;      ///< time in Hessian and force assembly
+  double factorization_seconds = 0.0; ///< time in sparse factorisations
+  double solve_seconds = 0.0;         ///< total wall time
+  std::string backend;                ///< linear solver used ("cholmod", "eigen-ldlt")
+  std::vector<double> residual_history;  ///< residual norm at each Newton iteration, N
+  std::string message;                ///< one sentence on the outcome
+};
+
+/// Throws SolverFailure with report.message unless report.status is kConverged.
+void require_converged(const SolveReport& report);
+
+/// Result of a static solve: node positions (flat, m) and the report.
+struct StaticResult {
+  VecX positions;
+  SolveReport report;
+};
+
+struct LinearOptions {
+  CholeskyBackend backend = CholeskyBackend::kAuto;  ///< sparse factorisation
+  bool estimate_min_eigenvalue = false;              ///< also fill report.min_eigenvalue (costs a few solves)
+};
+
+/// Linear static solve: K u = f on the free DOFs with K the model's Hessian at rest (the FEM stiffness for
+/// the linear law; the linearised model otherwise) and u the displacement of the prescribed DOFs applied.
+StaticResult linear_static(const model::Problem& problem, const LinearOptions& options = {});
+
+struct NewtonOptions {
+  double tolerance = 1e-9;        ///< converged when |residual| <= tolerance * max(|f|, |reaction|), default 1e-9
+  int max_iterations = 40;        ///< Newton iterations per load step, default 40
+  int initial_load_steps = 4;     ///< the load is applied in this many equal steps at first, default 4
+  double min_load_step = 1e-3;    ///< give up when a step below this fails, default 1e-3
+  bool check_stability = true;    ///< test positive definiteness after every accepted step, default true
+  int bisection_steps = 7;        ///< refinements of the critical load factor, default 7
+  bool project_psd = false;       ///< project element Hessians to PSD (robust, slower convergence), default false
+  CholeskyBackend backend = CholeskyBackend::kAuto;  ///< sparse factorisation
+};
+
+/// Newton's method with backtracking (Armijo) line search on Pi(x) = E(x) - lambda f.(x - X), load
+/// stepping lambda: 0 -> 1 with step halving on failure, and Levenberg shifts where the tangent is
+/// indefinite. Every accepted state is checked for stability (the tangent on the free DOFs must be
+/// positive definite); when stability is lost, the critical load factor is bracketed by bisection and the
+/// last stable state is returned with status kUnstable: an unstable equilibrium is never the answer.
+StaticResult static_equilibrium(const model::Problem& problem, const NewtonOptions& options = {});
+
+}  // namespace hooke::solve
