@@ -1,6 +1,6 @@
 #pragma once
 /// Common numeric types. SI units everywhere inside the library (m, Pa, N, kg, s).
-#include <Eigen/Core>
+#include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
 namespace hooke {

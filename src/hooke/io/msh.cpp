@@ -156,6 +156,7 @@ struct MshParser {
 
   // $Entities (4.1): physical tags of each entity.
   void entities_v41() {
+    if (binary) r.skip_line();  // binary data starts after the section header's newline
     std::uint64_t count[4];
     for (auto& c : count) c = binary ? r.binary<std::uint64_t>("entity counts") : static_cast<std::uint64_t>(r.integer("an entity count"));
     if (binary) {
@@ -205,6 +206,7 @@ struct MshParser {
   int int_value(const char* what) { return binary ? r.binary<int>(what) : static_cast<int>(r.integer(what)); }
 
   void nodes_v41() {
+    if (binary) r.skip_line();
     const std::uint64_t blocks = size_value("the number of node blocks");
     size_value("the number of nodes");
     size_value("the minimum node tag");
@@ -227,6 +229,7 @@ struct MshParser {
   }
 
   void elements_v41() {
+    if (binary) r.skip_line();
     const std::uint64_t blocks = size_value("the number of element blocks");
     size_value("the number of elements");
     size_value("the minimum element tag");

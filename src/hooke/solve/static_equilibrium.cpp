@@ -28,6 +28,7 @@ struct NewtonState {
   SolveReport& report;
   SparseCholesky chol;
   SparseMatrix identity;
+  double size = 1.0;  // extent of the body, m
 
   // Free-DOF residual r = dE/dx - lambda f and the force scale for the convergence test.
   VecX residual(const VecX& x, double lambda, double& scale) {
@@ -74,6 +75,12 @@ struct NewtonState {
       if (!(slope < 0.0)) {
         d = -r;
         slope = -r.squaredNorm();
+      }
+      // A Newton step below the round-off scale of the positions: converged (the force test alone cannot tell
+      // at tiny loads, where the residual is round-off noise).
+      if (d.cwiseAbs().maxCoeff() <= options.step_tolerance * size) {
+        for (int i = 0; i < map.size(); ++i) x(map.free[static_cast<size_t>(i)]) += d(i);
+        return true;
       }
       // Backtracking line search on the total potential energy.
       auto trial_at = [&](double alpha) {
@@ -185,6 +192,10 @@ StaticResult static_equilibrium(const model::Problem& problem, const NewtonOptio
   rep.reference_force = problem.external_force.norm();
   NewtonState newton{problem, map, options, rep, SparseCholesky(options.backend), SparseMatrix(map.size(), map.size())};
   newton.identity.setIdentity();
+  {
+    const VecX& rest = m.rest_positions();
+    newton.size = std::max(rest.maxCoeff() - rest.minCoeff(), 1e-300);
+  }
   rep.backend = std::string(newton.chol.backend_name());
 
   VecX x_stable = model::initial_positions(problem);

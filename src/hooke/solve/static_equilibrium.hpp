@@ -57,6 +57,8 @@ StaticResult linear_static(const model::Problem& problem, const LinearOptions& o
 
 struct NewtonOptions {
   double tolerance = 1e-9;        ///< converged when |residual| <= tolerance * max(|f|, |reaction|), default 1e-9
+  double step_tolerance = 1e-13;  ///< also converged when a full Newton step moves no DOF by more than this times
+                                  ///< the body's size (the force test alone drowns in round-off at tiny loads)
   int max_iterations = 40;        ///< Newton iterations per load step, default 40
   int initial_load_steps = 4;     ///< the load is applied in this many equal steps at first, default 4
   double min_load_step = 1e-3;    ///< give up when a step below this fails, default 1e-3

@@ -1,0 +1,107 @@
+// hooke fem MESH --young PA --poisson NU [...] -o OUT.vtu: the FEM reference on one load case.
+#include <cmath>
+#include <cstdio>
+#include <hooke/core/error.hpp>
+#include <hooke/core/units.hpp>
+#include <hooke/experiments/load_case.hpp>
+#include <hooke/fem/elastic_block.hpp>
+#include <hooke/io/csv.hpp>
+#include <hooke/io/mesh_io.hpp>
+#include <hooke/io/vtu.hpp>
+#include <hooke/solve/static_equilibrium.hpp>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+
+namespace hooke::cli {
+namespace {
+
+struct FemOptions {
+  std::string mesh_path, output, csv, unit = "m", load = "stretch", law = "linear", plane = "stress";
+  double young = 0.0, poisson = 0.0, thickness = 1e-3;
+  double traction = std::nan(""), strain = std::nan("");
+};
+
+int run_fem(const FemOptions& o) {
+  io::ReadOptions ro;
+  ro.metres_per_unit = metres_per_unit(o.unit);
+  const mesh::Mesh m = io::read_mesh(o.mesh_path, ro);
+  material::Material mat;
+  mat.law = material::law_from_name(o.law);
+  mat.youngs_modulus = o.young;
+  mat.poisson_ratio = o.poisson;
+  mat.thickness = o.thickness;
+  if (o.plane != "stress" && o.plane != "strain") throw InvalidArgument("--plane takes stress or strain");
+  mat.plane = o.plane == "stress" ? material::Plane::kStress : material::Plane::kStrain;
+  material::validate(mat);
+  const experiments::LoadKind kind = experiments::load_kind_from_name(o.load);
+  if (std::isnan(o.traction) == std::isnan(o.strain)) throw InvalidArgument("give exactly one of --traction and --strain");
+  const double traction = std::isnan(o.strain) ? o.traction : experiments::traction_for_strain(m, mat, kind, o.strain);
+
+  auto model = std::make_shared<model::Model>(m.dim(), Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size()));
+  model->add(fem::make_elastic_block(m, mat));
+  model::Problem problem = model::make_problem(model);
+  const experiments::LoadCase lc = experiments::make_load_case(m, kind, traction, mat.thickness);
+  experiments::apply(lc, problem);
+  const solve::StaticResult r =
+      mat.law == material::Law::kLinear ? solve::linear_static(problem) : solve::static_equilibrium(problem);
+  const solve::SolveReport& rep = r.report;
+
+  std::printf("hooke fem: %s\n", o.mesh_path.c_str());
+  std::printf("  mesh      %d nodes, %d %s elements, %d DOFs (%d free)\n", m.node_count(), m.element_count(),
+              std::string(mesh::element_kind_name(m.kind)).c_str(), model->dof_count(), rep.free_dofs);
+  std::printf("  material  %s, E = %g Pa, nu = %g%s\n", std::string(material::law_name(mat.law)).c_str(),
+              mat.youngs_modulus, mat.poisson_ratio,
+              m.dim() == 2 ? (", plane " + o.plane + ", t = " + std::to_string(mat.thickness) + " m").c_str() : "");
+  std::printf("  load      %s, traction %.6g Pa on %.6g m^2 of top boundary, height %.6g m, %zu clamped nodes\n",
+              o.load.c_str(), traction, lc.top_area, lc.height, lc.fixed_nodes.size());
+  std::printf("  solve     %s: %s\n", std::string(solve::status_name(rep.status)).c_str(), rep.message.c_str());
+  std::printf("  timing    total %.4f s (assembly %.4f s, factorisation %.4f s, %s)\n", rep.solve_seconds,
+              rep.assembly_seconds, rep.factorization_seconds, rep.backend.c_str());
+  if (mat.law != material::Law::kLinear)
+    std::printf("  newton    %d iterations, %d load steps, residual %.3g N, min tangent eigenvalue %.4g N/m\n",
+                rep.iterations, rep.load_steps, rep.residual, rep.min_eigenvalue);
+  solve::require_converged(rep);
+
+  const VecX u = r.positions - model->rest_positions();
+  double max_u = 0.0;
+  for (int i = 0; i < m.node_count(); ++i) max_u = std::max(max_u, u.segment(m.dim() * i, m.dim()).norm());
+  const double mean_top = experiments::mean_top_displacement(lc, problem, r.positions);
+  std::printf("  result    max displacement %.6g m, mean top displacement along the load %.6g m (%.2f %% of height)\n",
+              max_u, mean_top, 100.0 * mean_top / lc.height);
+  const io::Field displacement{"displacement", m.dim(), u};
+  VecX magnitude(m.node_count());
+  for (int i = 0; i < m.node_count(); ++i) magnitude(i) = u.segment(m.dim() * i, m.dim()).norm();
+  const io::Field magnitude_field{"displacement_magnitude", 1, magnitude};
+  const io::Field force{"external_force", m.dim(), problem.external_force};
+  io::write_vtu(o.output, m, {displacement, magnitude_field, force});
+  std::printf("  wrote     %s\n", o.output.c_str());
+  if (!o.csv.empty()) {
+    io::write_node_csv(o.csv, m, {displacement});
+    std::printf("  wrote     %s\n", o.csv.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+Action add_fem_command(CLI::App& app) {
+  auto o = std::make_shared<FemOptions>();
+  CLI::App* cmd = app.add_subcommand("fem", "Solve a load case with the FEM reference (linear, StVK or Neo-Hookean)");
+  cmd->add_option("mesh", o->mesh_path, "Mesh file (.msh, .vtu, .node/.ele, .obj, .off, .stl)")->required();
+  cmd->add_option("--young", o->young, "Young's modulus E, Pa")->required();
+  cmd->add_option("--poisson", o->poisson, "Poisson's ratio nu, in (-1, 0.5)")->required();
+  cmd->add_option("--thickness", o->thickness, "Plate thickness for 2D meshes, m")->capture_default_str();
+  cmd->add_option("--plane", o->plane, "2D model: stress or strain")->capture_default_str();
+  cmd->add_option("--unit", o->unit, "Length unit of the mesh file: m, cm, mm, um")->capture_default_str();
+  cmd->add_option("--load", o->load, "Load case: stretch, compress or shear")->capture_default_str();
+  cmd->add_option("--traction", o->traction, "Traction on the top boundary, Pa");
+  cmd->add_option("--strain", o->strain, "Set the traction so that the linear FEM's mean top displacement is S x height");
+  cmd->add_option("--material", o->law, "Constitutive law: linear, stvk or neohookean")->capture_default_str();
+  cmd->add_option("-o,--output", o->output, "Output .vtu with displacement")->required();
+  cmd->add_option("--csv", o->csv, "Also write per-node displacements as CSV");
+  return [o] { return run_fem(*o); };
+}
+
+}  // namespace hooke::cli

@@ -1,0 +1,88 @@
+// hooke mesh info MESH | hooke mesh convert IN OUT: inspect and convert meshes.
+#include <algorithm>
+#include <cstdio>
+#include <hooke/core/error.hpp>
+#include <hooke/core/units.hpp>
+#include <hooke/io/mesh_io.hpp>
+#include <hooke/mesh/measure.hpp>
+#include <hooke/mesh/topology.hpp>
+#include <hooke/mesh/validate.hpp>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+
+namespace hooke::cli {
+namespace {
+
+struct MeshOptions {
+  std::string input, output, unit = "m", msh_version = "4.1";
+  bool binary = false;
+};
+
+int run_info(const MeshOptions& o) {
+  io::ReadOptions ro;
+  ro.metres_per_unit = metres_per_unit(o.unit);
+  ro.validate = false;
+  mesh::Mesh m = io::read_mesh(o.input, ro);
+  const mesh::ValidationReport v = mesh::validate(m);
+  const auto lo = m.nodes.colwise().minCoeff().eval(), hi = m.nodes.colwise().maxCoeff().eval();
+  double measure = 0.0, qmin = 1.0, qsum = 0.0;
+  for (int e = 0; e < m.element_count(); ++e) {
+    measure += mesh::element_measure(m, e);
+    const double q = mesh::element_quality(m, e);
+    qmin = std::min(qmin, q);
+    qsum += q;
+  }
+  std::map<int, int> regions;
+  for (int e = 0; e < m.element_count(); ++e) ++regions[m.region(e)];
+  std::printf("%s\n  kind        %s (dim %d)\n  nodes       %d\n  elements    %d\n  edges       %zu\n", o.input.c_str(),
+              std::string(mesh::element_kind_name(m.kind)).c_str(), m.dim(), m.node_count(), m.element_count(),
+              mesh::unique_edges(m).size());
+  std::printf("  bounds      [");
+  for (int c = 0; c < m.dim(); ++c) std::printf("%s%.6g .. %.6g", c ? ", " : "", lo(c), hi(c));
+  std::printf("] m\n  %s  %.6g %s\n", m.dim() == 3 && m.kind == mesh::ElementKind::kTet ? "volume    " : "area      ",
+              measure, m.kind == mesh::ElementKind::kTet ? "m^3" : "m^2");
+  std::printf("  quality     min %.4f, mean %.4f (1 = regular)\n", qmin, qsum / m.element_count());
+  if (m.kind != mesh::ElementKind::kSurfaceTriangle)
+    std::printf("  boundary    %lld facets\n", static_cast<long long>(mesh::boundary_facets(m).rows()));
+  std::printf("  regions    ");
+  for (const auto& [r, n] : regions) std::printf(" %d (%d elements)", r, n);
+  std::printf("\n  reoriented  %d elements\n  unused      %zu nodes\n", v.reoriented_elements, v.unused_nodes.size());
+  return 0;
+}
+
+int run_convert(const MeshOptions& o) {
+  io::ReadOptions ro;
+  ro.metres_per_unit = metres_per_unit(o.unit);
+  const mesh::Mesh m = io::read_mesh(o.input, ro);
+  io::WriteOptions wo;
+  if (o.msh_version != "2.2" && o.msh_version != "4.1") throw InvalidArgument("--msh-version takes 2.2 or 4.1");
+  wo.msh_version = o.msh_version == "2.2" ? io::MshVersion::kV22 : io::MshVersion::kV41;
+  wo.binary = o.binary;
+  io::write_mesh(o.output, m, wo);
+  std::printf("wrote %s: %d nodes, %d %s elements (coordinates in m)\n", o.output.c_str(), m.node_count(),
+              m.element_count(), std::string(mesh::element_kind_name(m.kind)).c_str());
+  return 0;
+}
+
+}  // namespace
+
+Action add_mesh_command(CLI::App& app) {
+  auto o = std::make_shared<MeshOptions>();
+  CLI::App* cmd = app.add_subcommand("mesh", "Inspect and convert meshes");
+  cmd->require_subcommand(1);
+  CLI::App* info = cmd->add_subcommand("info", "Print counts, bounds, measure, quality and validation of a mesh");
+  info->add_option("mesh", o->input, "Mesh file")->required();
+  info->add_option("--unit", o->unit, "Length unit of the file: m, cm, mm, um")->capture_default_str();
+  CLI::App* convert = cmd->add_subcommand("convert", "Convert between formats (by extension); output in metres");
+  convert->add_option("input", o->input, "Input mesh")->required();
+  convert->add_option("output", o->output, "Output mesh (.msh, .vtu, .node/.ele, .obj, .off, .stl)")->required();
+  convert->add_option("--unit", o->unit, "Length unit of the input: m, cm, mm, um")->capture_default_str();
+  convert->add_option("--msh-version", o->msh_version, "2.2 or 4.1")->capture_default_str();
+  convert->add_flag("--binary", o->binary, "Binary .msh / .stl");
+  return [o, info] { return info->parsed() ? run_info(*o) : run_convert(*o); };
+}
+
+}  // namespace hooke::cli

@@ -1,0 +1,33 @@
+// hooke: command-line front end. Thin: every computation is a library call.
+#include <cstdio>
+#include <hooke/core/error.hpp>
+
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"hooke: mass-spring models calibrated from E and nu, validated against FEM"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "hooke 0.1.0");
+  const hooke::cli::Action fem = hooke::cli::add_fem_command(app);
+  const hooke::cli::Action mesh = hooke::cli::add_mesh_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    if (app.got_subcommand("fem")) return fem();
+    if (app.got_subcommand("mesh")) return mesh();
+  } catch (const hooke::SolverFailure& e) {
+    std::fprintf(stderr, "hooke: solver failure: %s\n", e.what());
+    return 3;
+  } catch (const hooke::Error& e) {
+    std::fprintf(stderr, "hooke: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "hooke: internal error: %s\n", e.what());
+    return 4;
+  }
+  return 2;
+}

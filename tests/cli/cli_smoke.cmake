@@ -1,0 +1,30 @@
+# CLI smoke test: fem on the committed cylinder at 12 % stretch, the VTU read back by hooke and by meshio
+# (an independent reader of the VTK XML format); a bad Poisson ratio fails with exit code 2 and no output.
+file(REMOVE_RECURSE ${OUT})
+file(MAKE_DIRECTORY ${OUT})
+execute_process(COMMAND ${HOOKE} fem ${MESHES}/cylinder.msh --young 14630 --poisson 0.3 --load stretch --strain 0.12
+                        -o ${OUT}/cyl.vtu --csv ${OUT}/cyl.csv
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "hooke fem failed: ${rc}")
+endif()
+if(NOT out MATCHES "12.00 % of height")
+  message(FATAL_ERROR "mean top displacement is not 12 % of the height")
+endif()
+execute_process(COMMAND ${HOOKE} mesh info ${OUT}/cyl.vtu RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "87")
+  message(FATAL_ERROR "the written VTU does not read back: ${out}")
+endif()
+execute_process(COMMAND /usr/bin/python3 -c
+  "import meshio,sys; m=meshio.read(sys.argv[1]); u=m.point_data['displacement']; assert len(m.points)==87 and u.shape==(87,3); assert abs(u[:,2].max())>1e-3; print('meshio read', len(m.points), 'points,', sum(len(c.data) for c in m.cells), 'cells')"
+  ${OUT}/cyl.vtu RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "meshio cannot read the VTU")
+endif()
+execute_process(COMMAND ${HOOKE} fem ${MESHES}/cylinder.msh --young 14630 --poisson 0.5 --strain 0.1 -o ${OUT}/bad.vtu
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "Poisson" OR EXISTS ${OUT}/bad.vtu)
+  message(FATAL_ERROR "nu = 0.5 must fail with exit code 2 and write nothing (got ${rc}: ${err})")
+endif()

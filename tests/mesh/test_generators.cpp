@@ -1,0 +1,75 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <hooke/mesh/generators.hpp>
+#include <hooke/mesh/measure.hpp>
+#include <hooke/mesh/topology.hpp>
+#include <hooke/mesh/validate.hpp>
+
+namespace hooke::mesh {
+namespace {
+
+TEST(Generators, LloydEquilateralMembraneCounts) {
+  // Lloyd Sec. 5.1: 39 nodes, 92 springs, 5.2 cm high.
+  Mesh m = equilateral_membrane(7, 6, 0.01);
+  EXPECT_EQ(validate(m).reoriented_elements, 0);
+  EXPECT_EQ(m.node_count(), 39);
+  EXPECT_EQ(unique_edges(m).size(), 92u);
+  EXPECT_NEAR(m.nodes.col(1).maxCoeff(), 0.052, 0.0005);
+  for (const auto& e : unique_edges(m)) EXPECT_NEAR((m.nodes.row(e[0]) - m.nodes.row(e[1])).norm(), 0.01, 1e-12);
+}
+
+TEST(Generators, HexagonIsEquilateralAndHasTheRightArea) {
+  Mesh m = hexagon_membrane(3, 0.01);
+  EXPECT_EQ(validate(m).reoriented_elements, 0);
+  double area = 0;
+  for (int e = 0; e < m.element_count(); ++e) area += element_measure(m, e);
+  EXPECT_NEAR(area, 1.5 * std::sqrt(3.0) * 1e-4, 1e-15);
+  EXPECT_EQ(m.element_count(), 6 * 9);
+}
+
+TEST(Generators, SquareMeshCountsOfLloydSec53) {
+  // 5 x 5 squares: 36 nodes, 60 edges + 50 diagonals = 110 springs.
+  Mesh m = rectangle_quads(0.05, 0.05, 5, 5);
+  EXPECT_EQ(validate(m).reoriented_elements, 0);
+  EXPECT_EQ(m.node_count(), 36);
+  EXPECT_EQ(unique_edges(m).size() + 2 * m.element_count(), 110u);
+}
+
+TEST(Generators, TetBoxFillsItsVolumeWithPositiveTets) {
+  Mesh m = tet_box(0.02, 0.03, 0.04, 3, 4, 5);
+  EXPECT_EQ(validate(m).reoriented_elements, 0);
+  double v = 0;
+  for (int e = 0; e < m.element_count(); ++e) v += element_measure(m, e);
+  EXPECT_NEAR(v, 0.02 * 0.03 * 0.04, 1e-15);
+  EXPECT_EQ(m.node_count(), 4 * 5 * 6);
+  // Conforming: every interior face is shared, so the boundary area is the box's surface area.
+  const RowMatXi f = boundary_facets(m);
+  EXPECT_NEAR(facet_measures(m, f).sum(), 2 * (0.02 * 0.03 + 0.03 * 0.04 + 0.02 * 0.04), 1e-14);
+}
+
+class CubeSurface : public ::testing::TestWithParam<std::pair<int, int>> {};
+
+TEST_P(CubeSurface, NodeCountsOfArnabTable1AndOutwardOrientation) {
+  const auto [n, nodes] = GetParam();
+  Mesh m = cube_surface(n, 0.1);
+  validate(m);
+  EXPECT_EQ(m.node_count(), nodes);
+  EXPECT_EQ(m.element_count(), 12 * n * n);
+  // Divergence theorem: the enclosed volume is sum over faces of (x . n) A / 3 > 0 only if normals point out.
+  double volume = 0;
+  for (int e = 0; e < m.element_count(); ++e) {
+    const Vec3 a = m.nodes.row(m.elements(e, 0)).transpose(), b = m.nodes.row(m.elements(e, 1)).transpose(),
+               c = m.nodes.row(m.elements(e, 2)).transpose();
+    volume += a.dot(b.cross(c)) / 6.0;
+  }
+  EXPECT_NEAR(volume, 1e-3, 1e-15);
+  // Closed: every edge is shared by exactly two triangles (Euler characteristic 2).
+  EXPECT_EQ(m.node_count() - static_cast<int>(unique_edges(m).size()) + m.element_count(), 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(Table1, CubeSurface,
+                         ::testing::Values(std::pair{10, 602}, std::pair{15, 1352}, std::pair{20, 2402}));
+
+}  // namespace
+}  // namespace hooke::mesh

@@ -1,0 +1,35 @@
+#include <hooke/mesh/topology.hpp>
+#include <hooke/mesh/validate.hpp>
+#include <random>
+#include <support/meshes.hpp>
+
+namespace hooke::test {
+
+mesh::Mesh perturb_interior(mesh::Mesh m, double fraction, unsigned seed) {
+  double min_edge = std::numeric_limits<double>::infinity();
+  for (const auto& e : mesh::unique_edges(m)) min_edge = std::min(min_edge, (m.nodes.row(e[0]) - m.nodes.row(e[1])).norm());
+  const Eigen::RowVectorXd lo = m.nodes.colwise().minCoeff(), hi = m.nodes.colwise().maxCoeff();
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double tol = 1e-9 * (hi - lo).norm();
+  for (int i = 0; i < m.node_count(); ++i) {
+    bool boundary = false;
+    for (int c = 0; c < m.dim(); ++c)
+      boundary = boundary || m.nodes(i, c) <= lo(c) + tol || m.nodes(i, c) >= hi(c) - tol;
+    if (boundary) continue;
+    for (int c = 0; c < m.dim(); ++c) m.nodes(i, c) += fraction * min_edge * u(rng);
+  }
+  mesh::validate(m);
+  return m;
+}
+
+VecX flat_positions(const mesh::Mesh& m) { return Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size()); }
+
+Mat3 random_rotation(unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> n;
+  Eigen::Quaterniond q(n(rng), n(rng), n(rng), n(rng));
+  return q.normalized().toRotationMatrix();
+}
+
+}  // namespace hooke::test

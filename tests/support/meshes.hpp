@@ -1,0 +1,18 @@
+#pragma once
+// Meshes for tests: structured generators with interior nodes moved at random (fixed seed).
+#include <Eigen/Geometry>
+#include <hooke/mesh/mesh.hpp>
+
+namespace hooke::test {
+
+// Moves every node not on the bounding box by up to `fraction` of the smallest element edge in each
+// coordinate, with a fixed seed, keeping elements valid. Boundary nodes stay (so boundaries stay flat).
+mesh::Mesh perturb_interior(mesh::Mesh mesh, double fraction, unsigned seed = 7);
+
+// Flat node-major positions of a mesh.
+VecX flat_positions(const mesh::Mesh& mesh);
+
+// Random rotation matrix (fixed seed).
+Mat3 random_rotation(unsigned seed = 3);
+
+}  // namespace hooke::test
