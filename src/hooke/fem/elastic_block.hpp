@@ -11,6 +11,8 @@ namespace hooke::fem {
 /// Energy E = sum_e sum_q w_q psi(F_q) over the elements of a mesh. F is built from the reference
 /// shape-function gradients: one point for CST and tet4, 2 x 2 Gauss points for Q4; w_q includes the
 /// thickness t in 2D. With the linear law its Hessian is the assembled linear stiffness K (constant).
+/// energy() is +infinity where any element is inverted (det F <= 0 at a quadrature point), for every law, so
+/// that solvers never accept a state in which the body has passed through itself.
 class ElasticBlock final : public model::TermBlock {
  public:
   /// @param mesh       validated triangle, quad or tet mesh (positions in m)

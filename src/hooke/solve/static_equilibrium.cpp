@@ -223,9 +223,15 @@ StaticResult static_equilibrium(const model::Problem& problem, const NewtonOptio
     if (!newton.solve_step(x, lambda)) {
       step *= 0.5;
       if (step < options.min_load_step)
-        return finish(SolveStatus::kNotConverged,
-                      "Newton did not converge beyond load factor " + format_double(lambda_stable) +
-                          " (load step below " + format_double(options.min_load_step) + ")");
+      {
+        StaticResult r = finish(SolveStatus::kNotConverged,
+                                "Newton did not converge beyond load factor " + format_double(lambda_stable) +
+                                    " (load step below " + format_double(options.min_load_step) + ")");
+        if (options.check_stability)
+          r.report.message += "; the smallest tangent eigenvalue there is " + format_double(r.report.min_eigenvalue) +
+                              " N/m (near zero: a limit point, beyond which the body collapses)";
+        return r;
+      }
       continue;
     }
     if (options.check_stability && !newton.stable_at(x)) {

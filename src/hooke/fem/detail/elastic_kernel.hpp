@@ -26,6 +26,9 @@ bool add_quadrature_point(material::Law law, const material::Lame& lame, double 
                           ElementMatrix<D, N>* hessian) {
   const Eigen::Matrix<double, D, D> f = deformation_gradient<D, N>(x, dn);
   if (energy) {
+    // An inverted element (det F <= 0) is outside the domain of every law: StVK would otherwise admit the
+    // mirrored, "stable" state a body reaches by collapsing through itself under compression.
+    if (!(f.determinant() > 0.0)) return false;
     const double psi = material::detail::psi<D>(law, f, lame);
     if (!std::isfinite(psi)) return false;
     *energy += w * psi;
