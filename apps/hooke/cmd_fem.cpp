@@ -36,7 +36,8 @@ int run_fem(const FemOptions& o) {
   mat.plane = o.plane == "stress" ? material::Plane::kStress : material::Plane::kStrain;
   material::validate(mat);
   const experiments::LoadKind kind = experiments::load_kind_from_name(o.load);
-  if (std::isnan(o.traction) == std::isnan(o.strain)) throw InvalidArgument("give exactly one of --traction and --strain");
+  if (std::isnan(o.traction) == std::isnan(o.strain))
+    throw InvalidArgument("give exactly one of --traction and --strain");
   const double traction = std::isnan(o.strain) ? o.traction : experiments::traction_for_strain(m, mat, kind, o.strain);
 
   auto model = std::make_shared<model::Model>(m.dim(), Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size()));
@@ -97,7 +98,8 @@ Action add_fem_command(CLI::App& app) {
   cmd->add_option("--unit", o->unit, "Length unit of the mesh file: m, cm, mm, um")->capture_default_str();
   cmd->add_option("--load", o->load, "Load case: stretch, compress or shear")->capture_default_str();
   cmd->add_option("--traction", o->traction, "Traction on the top boundary, Pa");
-  cmd->add_option("--strain", o->strain, "Set the traction so that the linear FEM's mean top displacement is S x height");
+  cmd->add_option("--strain", o->strain,
+                  "Set the traction so that the linear FEM's mean top displacement is S x height");
   cmd->add_option("--material", o->law, "Constitutive law: linear, stvk or neohookean")->capture_default_str();
   cmd->add_option("-o,--output", o->output, "Output .vtu with displacement")->required();
   cmd->add_option("--csv", o->csv, "Also write per-node displacements as CSV");

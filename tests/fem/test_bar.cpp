@@ -33,7 +33,8 @@ void uniform_tension(const mesh::Mesh& m, double width, double length) {
   for (int i : lc.fixed_nodes) p.fixed_dofs[static_cast<size_t>(d * i + up)] = 1;
   for (int i = 0; i < m.node_count(); ++i) {
     const bool origin = m.nodes.row(i).norm() < 1e-12;
-    const bool x_corner = d == 3 && std::abs(m.nodes(i, 0) - width) < 1e-12 && std::abs(m.nodes(i, 1)) + std::abs(m.nodes(i, 2)) < 1e-12;
+    const bool x_corner =
+        d == 3 && std::abs(m.nodes(i, 0) - width) < 1e-12 && std::abs(m.nodes(i, 1)) + std::abs(m.nodes(i, 2)) < 1e-12;
     if (origin)
       for (int c = 0; c < d; ++c) p.fixed_dofs[static_cast<size_t>(d * i + c)] = 1;
     if (x_corner) p.fixed_dofs[static_cast<size_t>(d * i + 1)] = 1;
@@ -45,7 +46,8 @@ void uniform_tension(const mesh::Mesh& m, double width, double length) {
   double worst_axial = 0, worst_lateral = 0;
   for (int i = 0; i < m.node_count(); ++i) {
     worst_axial = std::max(worst_axial, std::abs(u(d * i + up) - eps * m.nodes(i, up)));
-    for (int c = 0; c < up; ++c) worst_lateral = std::max(worst_lateral, std::abs(u(d * i + c) + kNu * eps * m.nodes(i, c)));
+    for (int c = 0; c < up; ++c)
+      worst_lateral = std::max(worst_lateral, std::abs(u(d * i + c) + kNu * eps * m.nodes(i, c)));
   }
   std::cout << "[bar] " << mesh::element_kind_name(m.kind) << " uniform tension: tip u = " << eps * length
             << " m expected, max axial error " << worst_axial << " m, max lateral error " << worst_lateral << " m\n";

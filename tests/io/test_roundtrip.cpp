@@ -27,9 +27,7 @@ void expect_same(const mesh::Mesh& a, const mesh::Mesh& b, double tol, bool regi
   EXPECT_LE((a.nodes - b.nodes).cwiseAbs().maxCoeff(), tol);
   EXPECT_EQ(a.elements, b.elements);
   if (regions) {
-
     EXPECT_EQ(a.region, b.region);
-
   }
 }
 
@@ -88,7 +86,8 @@ INSTANTIATE_TEST_SUITE_P(
                       RoundTrip{"surf.off", {}, mesh::ElementKind::kSurfaceTriangle, 0},
                       RoundTrip{"tri.off", {}, mesh::ElementKind::kTriangle, 0},
                       RoundTrip{"surf_ascii.stl", {MshVersion::kV41, false}, mesh::ElementKind::kSurfaceTriangle, 0},
-                      RoundTrip{"surf_binary.stl", {MshVersion::kV41, true}, mesh::ElementKind::kSurfaceTriangle, 1e-9}),
+                      RoundTrip{
+                          "surf_binary.stl", {MshVersion::kV41, true}, mesh::ElementKind::kSurfaceTriangle, 1e-9}),
     [](const auto& param_info) {
       std::string n = param_info.param.file;
       for (char& ch : n)

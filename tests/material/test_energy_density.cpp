@@ -1,8 +1,8 @@
 // P = dpsi/dF and dP/dF checked against central differences for every law, in 2D and 3D.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <Eigen/Geometry>
+#include <cmath>
 #include <hooke/material/energy_density.hpp>
 #include <random>
 

@@ -66,7 +66,8 @@ TEST(StaticEquilibrium, InvariantUnderRigidRotationOfMeshAndLoad) {
     model::Problem pr = model::make_problem(model);
     pr.fixed_dofs = p.fixed_dofs;
     pr.external_force = p.external_force;
-    for (int i = 0; i < m.node_count(); ++i) pr.external_force.segment<3>(3 * i) = r * p.external_force.segment<3>(3 * i);
+    for (int i = 0; i < m.node_count(); ++i)
+      pr.external_force.segment<3>(3 * i) = r * p.external_force.segment<3>(3 * i);
     const auto rot = static_equilibrium(pr);
     require_converged(rot.report);
     double worst = 0;
@@ -87,8 +88,8 @@ TEST(StaticEquilibrium, DetectsBucklingAndNeverReturnsTheUnstableState) {
   EXPECT_GT(below.report.min_eigenvalue, 0.0);
 
   const auto beyond = static_equilibrium(loaded(m, Law::kStVK, LoadKind::kCompress, 2.0 * sigma_cr));
-  std::cout << "[buckling] " << beyond.report.message << "; discrete/analytic critical stress = "
-            << 2.0 * beyond.report.critical_load_factor << "\n";
+  std::cout << "[buckling] " << beyond.report.message
+            << "; discrete/analytic critical stress = " << 2.0 * beyond.report.critical_load_factor << "\n";
   ASSERT_EQ(beyond.report.status, SolveStatus::kUnstable) << beyond.report.message;
   EXPECT_GT(beyond.report.critical_load_factor, 0.4);  // Q4 is stiff in bending: it over- rather than under-estimates
   EXPECT_LT(beyond.report.critical_load_factor, 0.75);

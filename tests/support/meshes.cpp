@@ -7,7 +7,8 @@ namespace hooke::test {
 
 mesh::Mesh perturb_interior(mesh::Mesh m, double fraction, unsigned seed) {
   double min_edge = std::numeric_limits<double>::infinity();
-  for (const auto& e : mesh::unique_edges(m)) min_edge = std::min(min_edge, (m.nodes.row(e[0]) - m.nodes.row(e[1])).norm());
+  for (const auto& e : mesh::unique_edges(m))
+    min_edge = std::min(min_edge, (m.nodes.row(e[0]) - m.nodes.row(e[1])).norm());
   const Eigen::RowVectorXd lo = m.nodes.colwise().minCoeff(), hi = m.nodes.colwise().maxCoeff();
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);

@@ -81,8 +81,7 @@ double mean_top_displacement(const LoadCase& load, const model::Problem& problem
   return load.top_nodes.empty() ? 0.0 : sum / static_cast<double>(load.top_nodes.size());
 }
 
-double traction_for_strain(const mesh::Mesh& mesh, const material::Material& material, LoadKind kind,
-                           double strain) {
+double traction_for_strain(const mesh::Mesh& mesh, const material::Material& material, LoadKind kind, double strain) {
   if (!(strain > 0.0) || !std::isfinite(strain)) throw InvalidArgument("the strain must be a positive number");
   material::Material linear = material;
   linear.law = material::Law::kLinear;

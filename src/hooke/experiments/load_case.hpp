@@ -21,13 +21,13 @@ std::string_view load_kind_name(LoadKind kind);
 /// Boundary conditions of one load case on one mesh.
 struct LoadCase {
   LoadKind kind = LoadKind::kStretch;
-  double traction_pa = 0.0;       ///< traction magnitude per reference area, Pa (N/m^2)
-  std::vector<int> fixed_nodes;   ///< bottom boundary nodes (min y in 2D, min z in 3D), clamped
-  std::vector<int> top_nodes;     ///< nodes on the loaded top boundary
-  VecX nodal_forces;              ///< consistent nodal forces, N, flat (dim * #V)
-  VecX direction;                 ///< unit load direction (dim)
-  double height = 0.0;            ///< extent of the mesh along the vertical axis, m
-  double top_area = 0.0;          ///< loaded reference area, m^2 (edge length x thickness in 2D)
+  double traction_pa = 0.0;      ///< traction magnitude per reference area, Pa (N/m^2)
+  std::vector<int> fixed_nodes;  ///< bottom boundary nodes (min y in 2D, min z in 3D), clamped
+  std::vector<int> top_nodes;    ///< nodes on the loaded top boundary
+  VecX nodal_forces;             ///< consistent nodal forces, N, flat (dim * #V)
+  VecX direction;                ///< unit load direction (dim)
+  double height = 0.0;           ///< extent of the mesh along the vertical axis, m
+  double top_area = 0.0;         ///< loaded reference area, m^2 (edge length x thickness in 2D)
 };
 
 /// Finds the top and bottom boundaries (nodes within 1e-6 of the bounding-box diagonal from max / min of
@@ -48,7 +48,6 @@ double mean_top_displacement(const LoadCase& load, const model::Problem& problem
 /// strain x height (the papers' "~12 % stretch"). One linear solve with a unit traction, scaled.
 /// @param material  the material (its law is ignored: the linear FEM decides)
 /// @pre strain > 0
-double traction_for_strain(const mesh::Mesh& mesh, const material::Material& material, LoadKind kind,
-                           double strain);
+double traction_for_strain(const mesh::Mesh& mesh, const material::Material& material, LoadKind kind, double strain);
 
 }  // namespace hooke::experiments

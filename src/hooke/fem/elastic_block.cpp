@@ -22,10 +22,9 @@ detail::Positions<D, N> gather(const Eigen::Ref<const VecX>& x, const RowMatXi& 
 
 // Evaluates the requested derivatives of element e; returns false where the energy is infinite.
 template <int D, int N>
-bool evaluate(const std::vector<int>& first, const std::vector<double>& weight,
-              const std::vector<double>& grad, material::Law law, const material::Lame& lame,
-              const detail::Positions<D, N>& p, int e, double* energy, detail::ElementVector<D, N>* gradient,
-              detail::ElementMatrix<D, N>* hessian) {
+bool evaluate(const std::vector<int>& first, const std::vector<double>& weight, const std::vector<double>& grad,
+              material::Law law, const material::Lame& lame, const detail::Positions<D, N>& p, int e, double* energy,
+              detail::ElementVector<D, N>* gradient, detail::ElementMatrix<D, N>* hessian) {
   for (int q = first[static_cast<size_t>(e)]; q < first[static_cast<size_t>(e) + 1]; ++q) {
     const Eigen::Map<const Eigen::Matrix<double, N, D, Eigen::RowMajor>> dn(&grad[static_cast<size_t>(q) * N * D]);
     if (!detail::add_quadrature_point<D, N>(law, lame, weight[static_cast<size_t>(q)], p, dn, energy, gradient,
@@ -151,8 +150,8 @@ void ElasticBlock::add_hessian(const Eigen::Ref<const VecX>& x, std::vector<Trip
     if (project_psd) hooke::detail::project_to_psd(h);
     for (int a = 0; a < m; ++a)
       for (int b = 0; b < m; ++b)
-        triplets.emplace_back(m_dim * m_elements(e, a / m_dim) + a % m_dim, m_dim * m_elements(e, b / m_dim) + b % m_dim,
-                              h(a, b));
+        triplets.emplace_back(m_dim * m_elements(e, a / m_dim) + a % m_dim,
+                              m_dim * m_elements(e, b / m_dim) + b % m_dim, h(a, b));
   }
 }
 

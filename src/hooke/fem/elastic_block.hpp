@@ -27,8 +27,7 @@ class ElasticBlock final : public model::TermBlock {
   void add_hessian(const Eigen::Ref<const VecX>& x, std::vector<Triplet>& triplets, bool project_psd) const override;
 
   /// Energy (J), gradient (N, size dim*npe) and Hessian (N/m) of element `e` alone at x.
-  void element_derivatives(const Eigen::Ref<const VecX>& x, int e, double& energy, VecX& gradient,
-                           MatX& hessian) const;
+  void element_derivatives(const Eigen::Ref<const VecX>& x, int e, double& energy, VecX& gradient, MatX& hessian) const;
 
  private:
   // Energy (added to *energy), gradient and Hessian of element e; null outputs are skipped.
@@ -39,11 +38,11 @@ class ElasticBlock final : public model::TermBlock {
   int m_dim;
   int m_npe;
   RowMatXi m_elements;
-  std::vector<material::Law> m_law;       // per element
-  std::vector<material::Lame> m_lame;     // per element
-  std::vector<int> m_first_point;         // per element + 1: range of its quadrature points
-  std::vector<double> m_weight;           // per quadrature point: reference measure (m^3, or m^2 * t)
-  std::vector<double> m_grad;             // per quadrature point: npe x dim dN/dX, row-major
+  std::vector<material::Law> m_law;    // per element
+  std::vector<material::Lame> m_lame;  // per element
+  std::vector<int> m_first_point;      // per element + 1: range of its quadrature points
+  std::vector<double> m_weight;        // per quadrature point: reference measure (m^3, or m^2 * t)
+  std::vector<double> m_grad;          // per quadrature point: npe x dim dN/dX, row-major
 };
 
 /// Convenience: one material for every element.

@@ -18,8 +18,10 @@ void write_node_csv(const std::filesystem::path& path, const mesh::Mesh& m, cons
         out << ',' << f.name;
         if (f.components > 1) {
           out << '_';
-          if (c < 3) out << kAxis[c];
-          else out << c;
+          if (c < 3)
+            out << kAxis[c];
+          else
+            out << c;
         }
       }
     out << '\n' << std::setprecision(12);

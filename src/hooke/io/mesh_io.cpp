@@ -25,13 +25,20 @@ std::string lower_extension(const std::filesystem::path& path) {
 mesh::Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options) {
   const std::string ext = lower_extension(path);
   mesh::Mesh m;
-  if (ext == ".msh") m = read_msh(path);
-  else if (ext == ".vtu") m = read_vtu(path).mesh;
-  else if (ext == ".node" || ext == ".ele" || ext == ".face") m = read_tetgen(path);
-  else if (ext == ".obj") m = read_obj(path);
-  else if (ext == ".off") m = read_off(path);
-  else if (ext == ".stl") m = read_stl(path);
-  else unknown(path);
+  if (ext == ".msh")
+    m = read_msh(path);
+  else if (ext == ".vtu")
+    m = read_vtu(path).mesh;
+  else if (ext == ".node" || ext == ".ele" || ext == ".face")
+    m = read_tetgen(path);
+  else if (ext == ".obj")
+    m = read_obj(path);
+  else if (ext == ".off")
+    m = read_off(path);
+  else if (ext == ".stl")
+    m = read_stl(path);
+  else
+    unknown(path);
   if (!(options.metres_per_unit > 0.0)) throw InvalidArgument("the unit scale must be positive");
   m.nodes *= options.metres_per_unit;
   if (options.validate) mesh::validate(m, options.validation);
@@ -40,13 +47,20 @@ mesh::Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& optio
 
 void write_mesh(const std::filesystem::path& path, const mesh::Mesh& mesh, const WriteOptions& options) {
   const std::string ext = lower_extension(path);
-  if (ext == ".msh") write_msh(path, mesh, options.msh_version, options.binary);
-  else if (ext == ".vtu") write_vtu(path, mesh);
-  else if (ext == ".node" || ext == ".ele" || ext == ".face") write_tetgen(path, mesh);
-  else if (ext == ".obj") write_obj(path, mesh);
-  else if (ext == ".off") write_off(path, mesh);
-  else if (ext == ".stl") write_stl(path, mesh, options.binary);
-  else unknown(path);
+  if (ext == ".msh")
+    write_msh(path, mesh, options.msh_version, options.binary);
+  else if (ext == ".vtu")
+    write_vtu(path, mesh);
+  else if (ext == ".node" || ext == ".ele" || ext == ".face")
+    write_tetgen(path, mesh);
+  else if (ext == ".obj")
+    write_obj(path, mesh);
+  else if (ext == ".off")
+    write_off(path, mesh);
+  else if (ext == ".stl")
+    write_stl(path, mesh, options.binary);
+  else
+    unknown(path);
 }
 
 }  // namespace hooke::io

@@ -30,9 +30,9 @@ struct MshParser {
   Reader& r;
   bool binary = false;
   double version = 0.0;
-  std::vector<double> xyz;                            // 3 per node
-  std::unordered_map<std::int64_t, int> node_index;   // file tag -> 0-based index
-  std::map<std::pair<int, int>, int> entity_physical; // (dim, tag) -> first physical tag (4.1)
+  std::vector<double> xyz;                             // 3 per node
+  std::unordered_map<std::int64_t, int> node_index;    // file tag -> 0-based index
+  std::map<std::pair<int, int>, int> entity_physical;  // (dim, tag) -> first physical tag (4.1)
   detail::RawElements raw;
 
   void expect_end(const std::string& section) {
@@ -158,7 +158,8 @@ struct MshParser {
   void entities_v41() {
     if (binary) r.skip_line();  // binary data starts after the section header's newline
     std::uint64_t count[4];
-    for (auto& c : count) c = binary ? r.binary<std::uint64_t>("entity counts") : static_cast<std::uint64_t>(r.integer("an entity count"));
+    for (auto& c : count)
+      c = binary ? r.binary<std::uint64_t>("entity counts") : static_cast<std::uint64_t>(r.integer("an entity count"));
     if (binary) {
       for (int dim = 0; dim < 4; ++dim)
         for (std::uint64_t i = 0; i < count[dim]; ++i) {
@@ -221,7 +222,8 @@ struct MshParser {
       const int per_node = 3 + (parametric ? dim : 0);
       for (std::uint64_t i = 0; i < n; ++i) {
         double c[6] = {0, 0, 0, 0, 0, 0};
-        for (int k = 0; k < per_node; ++k) c[k] = binary ? r.binary<double>("node coordinates") : r.number("a coordinate");
+        for (int k = 0; k < per_node; ++k)
+          c[k] = binary ? r.binary<double>("node coordinates") : r.number("a coordinate");
         add_node(tags[i], c[0], c[1], c[2]);
       }
     }
@@ -401,7 +403,8 @@ void write_v41(std::ostream& out, const mesh::Mesh& m, bool binary) {
   } else {
     out << "1 " << nv << " 1 " << nv << "\n" << edim << " 1 0 " << nv << "\n";
     for (int i = 0; i < nv; ++i) out << i + 1 << '\n';
-    for (int i = 0; i < nv; ++i) out << m.nodes(i, 0) << ' ' << m.nodes(i, 1) << ' ' << (m.dim() == 3 ? m.nodes(i, 2) : 0.0) << '\n';
+    for (int i = 0; i < nv; ++i)
+      out << m.nodes(i, 0) << ' ' << m.nodes(i, 1) << ' ' << (m.dim() == 3 ? m.nodes(i, 2) : 0.0) << '\n';
   }
   out << "$EndNodes\n$Elements\n";
   const int type = gmsh_type(m.kind);
@@ -445,7 +448,10 @@ mesh::Mesh read_msh(const std::filesystem::path& path) {
 
 void write_msh(const std::filesystem::path& path, const mesh::Mesh& mesh, MshVersion version, bool binary) {
   write_file_atomically(
-      path, [&](std::ostream& out) { version == MshVersion::kV22 ? write_v22(out, mesh, binary) : write_v41(out, mesh, binary); },
+      path,
+      [&](std::ostream& out) {
+        version == MshVersion::kV22 ? write_v22(out, mesh, binary) : write_v41(out, mesh, binary);
+      },
       true);
 }
 

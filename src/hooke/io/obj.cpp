@@ -48,8 +48,10 @@ mesh::Mesh read_obj(const std::filesystem::path& path) {
   }
   detail::RawElements raw;
   for (const auto& f : faces) {
-    if (f.size() == 3) raw.triangles.push_back({f[0], f[1], f[2]});
-    else raw.quads.push_back({f[0], f[1], f[2], f[3]});
+    if (f.size() == 3)
+      raw.triangles.push_back({f[0], f[1], f[2]});
+    else
+      raw.quads.push_back({f[0], f[1], f[2], f[3]});
   }
   RowMatX nodes(static_cast<Eigen::Index>(xyz.size() / 3), 3);
   for (Eigen::Index i = 0; i < nodes.size(); ++i) nodes.data()[i] = xyz[static_cast<size_t>(i)];

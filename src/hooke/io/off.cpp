@@ -9,7 +9,8 @@ namespace hooke::io {
 mesh::Mesh read_off(const std::filesystem::path& path) {
   detail::Reader r = detail::Reader::open(path);
   const std::string_view header = r.token('#');
-  if (header != "OFF") r.fail("not an OFF file (expected the header 'OFF', found '" + std::string(header.substr(0, 20)) + "')");
+  if (header != "OFF")
+    r.fail("not an OFF file (expected the header 'OFF', found '" + std::string(header.substr(0, 20)) + "')");
   const std::int64_t nv = r.integer("the vertex count", '#');
   const std::int64_t nf = r.integer("the face count", '#');
   r.integer("the edge count", '#');
@@ -28,8 +29,10 @@ mesh::Mesh read_off(const std::filesystem::path& path) {
       v[static_cast<size_t>(k)] = static_cast<int>(i);
     }
     while (!r.at_end_of_line()) r.token('#');  // optional colour
-    if (n == 3) raw.triangles.push_back({v[0], v[1], v[2]});
-    else raw.quads.push_back(v);
+    if (n == 3)
+      raw.triangles.push_back({v[0], v[1], v[2]});
+    else
+      raw.quads.push_back(v);
   }
   return detail::assemble(r.name(), nodes, std::move(raw));
 }

@@ -109,14 +109,15 @@ VtuContents read_vtu(const std::filesystem::path& path) {
     if (close == std::string::npos) break;
     const std::string tag = s.substr(pos, close - pos + 1);
     for (const char* sec : {"PointData", "CellData", "Points", "Cells"}) {
-      if (tag.rfind(std::string("<") + sec, 0) == 0 && (tag[std::string(sec).size() + 1] == '>' || tag[std::string(sec).size() + 1] == ' '))
+      if (tag.rfind(std::string("<") + sec, 0) == 0 &&
+          (tag[std::string(sec).size() + 1] == '>' || tag[std::string(sec).size() + 1] == ' '))
         section = sec;
     }
     if (tag.rfind("<DataArray", 0) == 0) {
       auto attr = attributes(tag);
       if (attr.count("format") && attr["format"] != "ascii") {
         r.fail_at_offset(pos, "DataArray '" + attr["Name"] + "' has format=\"" + attr["format"] +
-                "\"; only ASCII VTU is read (write it with hooke or choose ASCII in ParaView)");
+                                  "\"; only ASCII VTU is read (write it with hooke or choose ASCII in ParaView)");
       }
       const size_t end = s.find("</DataArray>", close);
       if (end == std::string::npos) {

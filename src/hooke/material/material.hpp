@@ -20,11 +20,11 @@ enum class Plane {
 
 /// One isotropic material.
 struct Material {
-  Law law = Law::kLinear;         ///< constitutive law
-  double youngs_modulus = 0.0;    ///< E, Pa, > 0
-  double poisson_ratio = 0.0;     ///< nu, in (-1, 0.5)
-  Plane plane = Plane::kStress;   ///< 2D meshes only
-  double thickness = 1.0;         ///< t, m, > 0; 2D meshes only (plate thickness for plane stress)
+  Law law = Law::kLinear;        ///< constitutive law
+  double youngs_modulus = 0.0;   ///< E, Pa, > 0
+  double poisson_ratio = 0.0;    ///< nu, in (-1, 0.5)
+  Plane plane = Plane::kStress;  ///< 2D meshes only
+  double thickness = 1.0;        ///< t, m, > 0; 2D meshes only (plate thickness for plane stress)
 };
 
 /// Lamé parameters, Pa.

@@ -4,9 +4,7 @@ namespace hooke::mesh {
 
 int nodes_per_element(ElementKind kind) { return kind == ElementKind::kQuad || kind == ElementKind::kTet ? 4 : 3; }
 
-int dimension(ElementKind kind) {
-  return kind == ElementKind::kTriangle || kind == ElementKind::kQuad ? 2 : 3;
-}
+int dimension(ElementKind kind) { return kind == ElementKind::kTriangle || kind == ElementKind::kQuad ? 2 : 3; }
 
 std::string_view element_kind_name(ElementKind kind) {
   switch (kind) {

@@ -24,10 +24,10 @@ std::string_view element_kind_name(ElementKind kind);
 /// A mesh of one element kind.
 struct Mesh {
   ElementKind kind = ElementKind::kTet;
-  RowMatX nodes;       ///< #V x dim node positions, m
-  RowMatXi elements;   ///< #E x nodes_per_element(kind) 0-based node indices
+  RowMatX nodes;           ///< #V x dim node positions, m
+  RowMatXi elements;       ///< #E x nodes_per_element(kind) 0-based node indices
   Eigen::VectorXi region;  ///< #E region (physical group) tag per element; 0 where the file has none
-  std::string source;  ///< file name or generator name, used in error messages
+  std::string source;      ///< file name or generator name, used in error messages
 
   int dim() const { return dimension(kind); }
   int node_count() const { return static_cast<int>(nodes.rows()); }

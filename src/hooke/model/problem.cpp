@@ -41,8 +41,7 @@ VecX initial_positions(const Problem& problem) {
 }
 
 double potential_energy(const Problem& problem, const Eigen::Ref<const VecX>& x, double load_factor) {
-  return problem.model->energy(x) -
-         load_factor * problem.external_force.dot(x - problem.model->rest_positions());
+  return problem.model->energy(x) - load_factor * problem.external_force.dot(x - problem.model->rest_positions());
 }
 
 }  // namespace hooke::model

@@ -19,8 +19,7 @@ class TermBlock {
   virtual void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const = 0;
   /// Appends the entries of d2E/dx2 at x (N/m) to `triplets` (duplicates are summed on assembly).
   /// @param project_psd  project each element's Hessian to positive semi-definite first
-  virtual void add_hessian(const Eigen::Ref<const VecX>& x, std::vector<Triplet>& triplets,
-                           bool project_psd) const = 0;
+  virtual void add_hessian(const Eigen::Ref<const VecX>& x, std::vector<Triplet>& triplets, bool project_psd) const = 0;
 };
 
 }  // namespace hooke::model

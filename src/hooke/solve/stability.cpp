@@ -37,9 +37,13 @@ double smallest_eigenvalue(const SparseMatrix& a, double relative_tolerance) {
     }
   }
   for (int k = 0; k < 80 && hi - lo > 1e-3 * std::max(std::abs(lo), std::abs(hi)); ++k) {
-    const double mid = (lo > 0.0 && hi > 4.0 * lo) ? std::sqrt(lo * hi) : (hi < 0.0 && lo < 4.0 * hi) ? -std::sqrt(lo * hi) : 0.5 * (lo + hi);
-    if (definite_below(mid)) lo = mid;
-    else hi = mid;
+    const double mid = (lo > 0.0 && hi > 4.0 * lo)   ? std::sqrt(lo * hi)
+                       : (hi < 0.0 && lo < 4.0 * hi) ? -std::sqrt(lo * hi)
+                                                     : 0.5 * (lo + hi);
+    if (definite_below(mid))
+      lo = mid;
+    else
+      hi = mid;
   }
   if (!definite_below(lo)) throw SolverFailure("smallest_eigenvalue: lost the factorisation of the shifted matrix");
   std::mt19937 rng(12345);
@@ -48,7 +52,9 @@ double smallest_eigenvalue(const SparseMatrix& a, double relative_tolerance) {
   for (Eigen::Index i = 0; i < n; ++i) v(i) = normal(rng);
   v.normalize();
   double rayleigh = v.dot(a * v), previous = std::numeric_limits<double>::infinity();
-  for (int it = 0; it < 300 && std::abs(rayleigh - previous) > relative_tolerance * std::max(std::abs(rayleigh), 1e-14 * scale); ++it) {
+  for (int it = 0;
+       it < 300 && std::abs(rayleigh - previous) > relative_tolerance * std::max(std::abs(rayleigh), 1e-14 * scale);
+       ++it) {
     v = chol.solve(v);
     v.normalize();
     previous = rayleigh;

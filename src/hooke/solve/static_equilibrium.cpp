@@ -214,19 +214,19 @@ StaticResult static_equilibrium(const model::Problem& problem, const NewtonOptio
   };
 
   if (options.check_stability && !newton.stable_at(x_stable))
-    return finish(SolveStatus::kSingular, "the tangent stiffness at the start is not positive definite: the body is "
-                                          "not held against rigid motion, or starts in an unstable state");
+    return finish(SolveStatus::kSingular,
+                  "the tangent stiffness at the start is not positive definite: the body is "
+                  "not held against rigid motion, or starts in an unstable state");
 
   while (lambda_stable < 1.0) {
     const double lambda = std::min(1.0, lambda_stable + step);
     VecX x = x_stable;
     if (!newton.solve_step(x, lambda)) {
       step *= 0.5;
-      if (step < options.min_load_step)
-      {
-        StaticResult r = finish(SolveStatus::kNotConverged,
-                                "Newton did not converge beyond load factor " + format_double(lambda_stable) +
-                                    " (load step below " + format_double(options.min_load_step) + ")");
+      if (step < options.min_load_step) {
+        StaticResult r = finish(SolveStatus::kNotConverged, "Newton did not converge beyond load factor " +
+                                                                format_double(lambda_stable) + " (load step below " +
+                                                                format_double(options.min_load_step) + ")");
         if (options.check_stability)
           r.report.message += "; the smallest tangent eigenvalue there is " + format_double(r.report.min_eigenvalue) +
                               " N/m (near zero: a limit point, beyond which the body collapses)";
@@ -250,10 +250,11 @@ StaticResult static_equilibrium(const model::Problem& problem, const NewtonOptio
       }
       rep.critical_load_factor = 0.5 * (lo + hi);
       return finish(SolveStatus::kUnstable,
-                    "stability is lost at load factor " + format_double(rep.critical_load_factor) +
-                        " (between " + format_double(lo) + " and " + format_double(hi) +
+                    "stability is lost at load factor " + format_double(rep.critical_load_factor) + " (between " +
+                        format_double(lo) + " and " + format_double(hi) +
                         "): the equilibrium beyond it is unstable (buckling); the state returned is the last "
-                        "stable one, at load factor " + format_double(lo));
+                        "stable one, at load factor " +
+                        format_double(lo));
     }
     x_stable = std::move(x);
     lambda_stable = lambda;

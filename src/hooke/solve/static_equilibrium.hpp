@@ -21,20 +21,20 @@ std::string_view status_name(SolveStatus status);
 /// What a static solve did. Numbers, never exceptions: see require_converged().
 struct SolveReport {
   SolveStatus status = SolveStatus::kNotConverged;
-  int iterations = 0;                 ///< Newton iterations over all load steps (1 for the linear solve)
-  int load_steps = 0;                 ///< accepted load steps
-  double load_factor = 0.0;           ///< load factor of the returned state (1 = the full load)
-  double residual = 0.0;              ///< norm of the free-DOF force residual at the returned state, N
-  double reference_force = 0.0;       ///< norm of the applied forces, N (the residual's scale)
-  double min_eigenvalue = 0.0;        ///< smallest tangent eigenvalue on the free DOFs at the returned state, N/m
-  double critical_load_factor = -1.0; ///< load factor where stability is lost, or -1
-  int free_dofs = 0;                  ///< number of unknowns
-  double assembly_seconds = 0.0;      ///< time in Hessian and force assembly
-  double factorization_seconds = 0.0; ///< time in sparse factorisations
-  double solve_seconds = 0.0;         ///< total wall time
-  std::string backend;                ///< linear solver used ("cholmod", "eigen-ldlt")
+  int iterations = 0;                    ///< Newton iterations over all load steps (1 for the linear solve)
+  int load_steps = 0;                    ///< accepted load steps
+  double load_factor = 0.0;              ///< load factor of the returned state (1 = the full load)
+  double residual = 0.0;                 ///< norm of the free-DOF force residual at the returned state, N
+  double reference_force = 0.0;          ///< norm of the applied forces, N (the residual's scale)
+  double min_eigenvalue = 0.0;           ///< smallest tangent eigenvalue on the free DOFs at the returned state, N/m
+  double critical_load_factor = -1.0;    ///< load factor where stability is lost, or -1
+  int free_dofs = 0;                     ///< number of unknowns
+  double assembly_seconds = 0.0;         ///< time in Hessian and force assembly
+  double factorization_seconds = 0.0;    ///< time in sparse factorisations
+  double solve_seconds = 0.0;            ///< total wall time
+  std::string backend;                   ///< linear solver used ("cholmod", "eigen-ldlt")
   std::vector<double> residual_history;  ///< residual norm at each Newton iteration, N
-  std::string message;                ///< one sentence on the outcome
+  std::string message;                   ///< one sentence on the outcome
 };
 
 /// Throws SolverFailure with report.message unless report.status is kConverged.

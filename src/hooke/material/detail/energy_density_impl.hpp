@@ -1,7 +1,7 @@
 #pragma once
 // Dimension-generic kernels behind energy_density.hpp.
-#include <cmath>
 #include <Eigen/Dense>
+#include <cmath>
 #include <hooke/material/material.hpp>
 #include <limits>
 
