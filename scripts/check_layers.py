@@ -1,0 +1,29 @@
+#!/usr/bin/env python3
+"""Fails when a file in src/hooke/<layer>/ includes a header of a layer above it (STYLE.md layer order)."""
+import pathlib
+import re
+import sys
+
+ORDER = ["core", "mesh", "io", "material", "model", "fem", "springs", "surface", "calibrate", "solve", "experiments"]
+# fem, springs and surface are siblings: none may include another.
+SIBLINGS = {"fem", "springs", "surface"}
+
+root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".") / "src" / "hooke"
+bad = []
+for path in sorted(root.rglob("*.[ch]pp")):
+    layer = path.relative_to(root).parts[0]
+    if layer not in ORDER:
+        bad.append(f"{path}: folder '{layer}' is not a layer of STYLE.md")
+        continue
+    for n, line in enumerate(path.read_text().splitlines(), 1):
+        m = re.match(r'\s*#include\s*<hooke/([a-z_]+)/', line)
+        if not m:
+            continue
+        target = m.group(1)
+        if target not in ORDER:
+            bad.append(f"{path}:{n}: includes unknown layer '{target}'")
+        elif ORDER.index(target) > ORDER.index(layer) or (
+                target != layer and target in SIBLINGS and layer in SIBLINGS):
+            bad.append(f"{path}:{n}: layer '{layer}' includes '{target}', which is above it")
+print("\n".join(bad) if bad else f"layer order respected in {len(list(root.rglob('*.[ch]pp')))} files")
+sys.exit(1 if bad else 0)
