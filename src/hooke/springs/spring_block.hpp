@@ -1,0 +1,51 @@
+#pragma once
+/// Linear (Hookean) springs between node pairs, with optional prestrained rest lengths (Lloyd et al. 2007).
+#include <array>
+#include <hooke/model/term_block.hpp>
+#include <vector>
+
+namespace hooke::springs {
+
+/// Energy of one spring: E = k/2 (|p_i - p_j| - l0)^2, J, with k in N/m and l0 in m.
+/// @pre p_i != p_j
+double spring_energy(const Eigen::Ref<const VecX>& pi, const Eigen::Ref<const VecX>& pj, double stiffness,
+                     double rest_length);
+/// dE/dp_i (N); dE/dp_j is its negative. This is the force the spring resists with at node i: the force it
+/// applies to node i is the negative (Lloyd Sec. 3.2 prints the former as "the force at node i").
+VecX spring_energy_gradient(const Eigen::Ref<const VecX>& pi, const Eigen::Ref<const VecX>& pj, double stiffness,
+                            double rest_length);
+/// d2E/dp_i2 (N/m), the d x d block A; the spring's Hessian is [A, -A; -A, A].
+/// A = k [(1 - l0/l) I + (l0/l) u u^T] with l = |p_i - p_j|, u = (p_i - p_j)/l. At l = l0 this is Lloyd Eq. 6,
+/// A = k/l0^2 (p_i - p_j)(p_i - p_j)^T; with prestrain (l0 = c |p_i - p_j|, Eq. 11) the isotropic term stays.
+MatX spring_energy_hessian(const Eigen::Ref<const VecX>& pi, const Eigen::Ref<const VecX>& pj, double stiffness,
+                           double rest_length);
+
+/// All springs of a model, evaluated in one call.
+class SpringBlock final : public model::TermBlock {
+ public:
+  /// @param dim           2 or 3
+  /// @param pairs         node pairs (i, j), i != j
+  /// @param stiffness     k per spring, N/m, >= 0
+  /// @param rest_length   l0 per spring, m, > 0
+  /// @throws InvalidArgument on mismatched sizes, a negative stiffness or a non-positive rest length
+  SpringBlock(int dim, std::vector<std::array<int, 2>> pairs, VecX stiffness, VecX rest_length);
+
+  std::string_view name() const override { return "springs"; }
+  double energy(const Eigen::Ref<const VecX>& x) const override;
+  void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const override;
+  /// With project_psd, the isotropic term k (1 - l0/l) I of a compressed spring (l < l0) is dropped, which
+  /// leaves the closest positive semi-definite block of this form.
+  void add_hessian(const Eigen::Ref<const VecX>& x, std::vector<Triplet>& triplets, bool project_psd) const override;
+
+  const std::vector<std::array<int, 2>>& pairs() const { return m_pairs; }
+  const VecX& stiffness() const { return m_stiffness; }
+  const VecX& rest_length() const { return m_rest_length; }
+
+ private:
+  int m_dim;
+  std::vector<std::array<int, 2>> m_pairs;
+  VecX m_stiffness;
+  VecX m_rest_length;
+};
+
+}  // namespace hooke::springs
