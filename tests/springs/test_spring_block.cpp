@@ -112,3 +112,61 @@ TEST(LloydSquare, PrestrainedSpringsEqualBilinearQuadAtNuOneThird) {
 
 }  // namespace
 }  // namespace hooke::springs
+
+#include <hooke/mesh/generators.hpp>
+#include <hooke/mesh/measure.hpp>
+#include <hooke/springs/tet_volume_block.hpp>
+
+namespace hooke::springs {
+namespace {
+
+TEST(TetVolumeBlock, GradientAndHessianMatchFiniteDifferences) {
+  const mesh::Mesh m = mesh::tet_box(0.01, 0.01, 0.01, 1, 1, 2);
+  VecX v0(m.element_count());
+  for (int t = 0; t < m.element_count(); ++t) v0(t) = mesh::element_measure(m, t);
+  const TetVolumeBlock b(m.elements, VecX::LinSpaced(m.element_count(), 1e-3, 3e-3), v0);
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  VecX x = Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size());
+  EXPECT_DOUBLE_EQ(b.energy(x), 0.0);
+  for (Eigen::Index i = 0; i < x.size(); ++i) x(i) += 0.001 * u(rng);
+  auto energy = [&](const VecX& y) { return b.energy(y); };
+  auto gradient = [&](const VecX& y) {
+    VecX g = VecX::Zero(y.size());
+    b.add_gradient(y, g);
+    return g;
+  };
+  EXPECT_LT((gradient(x) - test::fd_gradient(energy, x, 1e-8)).norm(), 1e-6 * gradient(x).norm());
+  std::vector<Triplet> t;
+  b.add_hessian(x, t, false);
+  SparseMatrix h(x.size(), x.size());
+  h.setFromTriplets(t.begin(), t.end());
+  const MatX h_fd = test::fd_jacobian(gradient, x, 1e-8);
+  EXPECT_LT((MatX(h) - h_fd).norm(), 1e-6 * h_fd.norm());
+}
+
+}  // namespace
+}  // namespace hooke::springs
+
+namespace hooke::springs {
+namespace {
+
+// The erratum of App. C.2: on the unit tet, dE_V/dp1 of a compressed tet points along +(1,1,1) (the energy
+// grows as p1 moves towards its opposite face), i.e. dV/dp1 = -(1,1,1)/6, the opposite of the printed formula.
+TEST(TetVolumeBlock, UnitTetGradientHasTheCorrectedSigns) {
+  RowMatXi tet(1, 4);
+  tet << 0, 1, 2, 3;
+  const TetVolumeBlock b(tet, VecX::Constant(1, 36.0), VecX::Constant(1, 1.0 / 3.0));  // V = 1/6 < V0
+  VecX x(12);
+  x << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  VecX g = VecX::Zero(12);
+  b.add_gradient(x, g);
+  // k_V (V - V0) / V0^2 = 36 (-1/6) * 9 = -54, times dV/dp.
+  EXPECT_LT((g.segment<3>(0) - Vec3(9, 9, 9)).norm(), 1e-12);
+  EXPECT_LT((g.segment<3>(3) - Vec3(-9, 0, 0)).norm(), 1e-12);
+  EXPECT_LT((g.segment<3>(6) - Vec3(0, -9, 0)).norm(), 1e-12);
+  EXPECT_LT((g.segment<3>(9) - Vec3(0, 0, -9)).norm(), 1e-12);
+}
+
+}  // namespace
+}  // namespace hooke::springs

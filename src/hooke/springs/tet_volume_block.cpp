@@ -1,0 +1,104 @@
+#include <hooke/core/detail/psd.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/springs/tet_volume_block.hpp>
+
+namespace hooke::springs {
+namespace {
+
+using Mat34 = Eigen::Matrix<double, 3, 4>;
+
+Mat34 corners(const Eigen::Ref<const VecX>& x, const RowMatXi& tets, int t) {
+  Mat34 p;
+  for (int a = 0; a < 4; ++a) p.col(a) = x.segment<3>(3 * tets(t, a));
+  return p;
+}
+
+double volume(const Mat34& p) {
+  return (p.col(1) - p.col(0)).dot((p.col(2) - p.col(0)).cross(p.col(3) - p.col(0))) / 6.0;
+}
+
+// dV/dp_a in column a. From V = e1 . (e2 x e3) / 6 with e_k = p_{k+1} - p1: dV/dp2 = e2 x e3 / 6,
+// dV/dp3 = e3 x e1 / 6, dV/dp4 = e1 x e2 / 6, dV/dp1 = -(their sum). Erratum: Lloyd App. C.2 prints
+// (p2 - p4) x (p3 - p4) for p1 and (p4 - p2) x (p1 - p2) for p3, both of the wrong sign (on the unit tet the
+// first gives +(1,1,1)/6, although moving p1 towards its opposite face shrinks V); see docs/methods/springs.md.
+Mat34 volume_gradient(const Mat34& p) {
+  const Vec3 e1 = p.col(1) - p.col(0), e2 = p.col(2) - p.col(0), e3 = p.col(3) - p.col(0);
+  Mat34 g;
+  g.col(1) = e2.cross(e3) / 6.0;
+  g.col(2) = e3.cross(e1) / 6.0;
+  g.col(3) = e1.cross(e2) / 6.0;
+  g.col(0) = -(g.col(1) + g.col(2) + g.col(3));
+  return g;
+}
+
+Mat3 cross_matrix(const Vec3& v) {
+  Mat3 m;
+  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return m;
+}
+
+// d2V/dx2 (12 x 12). With edges e_k = p_{k+1} - p_1, V = e1 . (e2 x e3) / 6 is trilinear, and
+// d2V/de2 de1 = [e3]x / 6, d2V/de3 de2 = [e1]x / 6, d2V/de1 de3 = [e2]x / 6 (transposes above the diagonal).
+Mat12 volume_hessian(const Mat34& p) {
+  const Vec3 e1 = p.col(1) - p.col(0), e2 = p.col(2) - p.col(0), e3 = p.col(3) - p.col(0);
+  Eigen::Matrix<double, 9, 9> he = Eigen::Matrix<double, 9, 9>::Zero();
+  he.block<3, 3>(3, 0) = cross_matrix(e3) / 6.0;
+  he.block<3, 3>(6, 3) = cross_matrix(e1) / 6.0;
+  he.block<3, 3>(0, 6) = cross_matrix(e2) / 6.0;
+  he.block<3, 3>(0, 3) = he.block<3, 3>(3, 0).transpose();
+  he.block<3, 3>(3, 6) = he.block<3, 3>(6, 3).transpose();
+  he.block<3, 3>(6, 0) = he.block<3, 3>(0, 6).transpose();
+  Eigen::Matrix<double, 9, 12> s = Eigen::Matrix<double, 9, 12>::Zero();  // e = S x
+  for (int k = 0; k < 3; ++k) {
+    s.block<3, 3>(3 * k, 0) = -Mat3::Identity();
+    s.block<3, 3>(3 * k, 3 * (k + 1)) = Mat3::Identity();
+  }
+  return s.transpose() * he * s;
+}
+
+}  // namespace
+
+TetVolumeBlock::TetVolumeBlock(RowMatXi tets, VecX stiffness, VecX rest_volume)
+    : m_tets(std::move(tets)), m_stiffness(std::move(stiffness)), m_rest_volume(std::move(rest_volume)) {
+  if (m_tets.cols() != 4 || m_stiffness.size() != m_tets.rows() || m_rest_volume.size() != m_tets.rows())
+    throw InvalidArgument("TetVolumeBlock: one stiffness and one rest volume per tet");
+  for (Eigen::Index t = 0; t < m_tets.rows(); ++t)
+    if (!(m_stiffness(t) >= 0.0) || !(m_rest_volume(t) > 0.0))
+      throw InvalidArgument("tet " + std::to_string(t) + " has a negative k_V or a non-positive rest volume");
+}
+
+double TetVolumeBlock::energy(const Eigen::Ref<const VecX>& x) const {
+  double e = 0.0;
+  for (int t = 0; t < m_tets.rows(); ++t) {
+    const double c = volume(corners(x, m_tets, t)) - m_rest_volume(t);
+    e += 0.5 * m_stiffness(t) * c * c / (m_rest_volume(t) * m_rest_volume(t));
+  }
+  return e;
+}
+
+void TetVolumeBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
+  for (int t = 0; t < m_tets.rows(); ++t) {
+    const Mat34 p = corners(x, m_tets, t);
+    const double v0 = m_rest_volume(t);
+    const Mat34 g = m_stiffness(t) * (volume(p) - v0) / (v0 * v0) * volume_gradient(p);
+    for (int a = 0; a < 4; ++a) gradient.segment<3>(3 * m_tets(t, a)) += g.col(a);
+  }
+}
+
+void TetVolumeBlock::add_hessian(const Eigen::Ref<const VecX>& x, std::vector<Triplet>& triplets,
+                                 bool project_psd) const {
+  triplets.reserve(triplets.size() + static_cast<size_t>(m_tets.rows()) * 144);
+  for (int t = 0; t < m_tets.rows(); ++t) {
+    const Mat34 p = corners(x, m_tets, t);
+    const double v0 = m_rest_volume(t), scale = m_stiffness(t) / (v0 * v0);
+    const Mat34 grad = volume_gradient(p);
+    const Eigen::Map<const Eigen::Matrix<double, 12, 1>> g(grad.data());
+    Mat12 h = scale * (g * g.transpose() + (volume(p) - v0) * volume_hessian(p));
+    if (project_psd) hooke::detail::project_to_psd(h);
+    for (int a = 0; a < 12; ++a)
+      for (int b = 0; b < 12; ++b)
+        triplets.emplace_back(3 * m_tets(t, a / 3) + a % 3, 3 * m_tets(t, b / 3) + b % 3, h(a, b));
+  }
+}
+
+}  // namespace hooke::springs

@@ -1,0 +1,29 @@
+#pragma once
+/// Volume-preserving terms of tetrahedra (Lloyd et al. 2007, App. C.2, after Teschner et al. 2004).
+#include <hooke/model/term_block.hpp>
+
+namespace hooke::springs {
+
+/// Energy of one tet: E_V = k_V / (2 V0^2) (V - V0)^2, J, with V = (p2 - p1) . ((p3 - p1) x (p4 - p1)) / 6.
+/// k_V in J (N m), volumes in m^3. Gradient: k_V (V - V0)/V0^2 dV/dx (App. C, Eq. 17 with C = (V - V0)/V0);
+/// Hessian: k_V/V0^2 (dV dV^T + (V - V0) d2V), the second term vanishing at rest (Eq. 18).
+class TetVolumeBlock final : public model::TermBlock {
+ public:
+  /// @param tets        #T x 4 node indices of positively oriented tets
+  /// @param stiffness   k_V per tet, J, >= 0
+  /// @param rest_volume V0 per tet, m^3, > 0
+  /// @throws InvalidArgument on mismatched sizes, a negative k_V or a non-positive V0
+  TetVolumeBlock(RowMatXi tets, VecX stiffness, VecX rest_volume);
+
+  std::string_view name() const override { return "tet-volume"; }
+  double energy(const Eigen::Ref<const VecX>& x) const override;
+  void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const override;
+  void add_hessian(const Eigen::Ref<const VecX>& x, std::vector<Triplet>& triplets, bool project_psd) const override;
+
+ private:
+  RowMatXi m_tets;
+  VecX m_stiffness;
+  VecX m_rest_volume;
+};
+
+}  // namespace hooke::springs
