@@ -1,0 +1,30 @@
+#pragma once
+/// Calibration methods: spring stiffness from Young's modulus and Poisson's ratio. Stable names are shared
+/// by the library, the CLI and reports; docs/methods/ describes each with its equation and validity.
+#include <hooke/calibrate/spring_model.hpp>
+#include <hooke/material/material.hpp>
+#include <string_view>
+#include <vector>
+
+namespace hooke::calibrate {
+
+enum class Method {
+  kVanGelder,          ///< "vangelder": k = sum_e E t A_e / l^2 (triangles); sum_e E V_e / l^2 (tets)
+  kLloydEquilateral,   ///< "lloyd-equilateral": Eq. 8, k = sum_e E t sqrt(3)/4 (triangles)
+  kLloydTriangle,      ///< "lloyd-triangle": Eq. 9, k = sum_e E t sqrt(3)/4 A_e/A_0, A_0 = sqrt(3)/4 l^2
+  kLloydSquare,        ///< "lloyd-square": Eq. 10-11, edges 5/16 t E (l0 = 6/5 l), diagonals 7/16 t E (l0 = 6/7 l)
+  kLloydTet,           ///< "lloyd-tet": Eq. 12 with Eq. 13, k = sum_e 2 sqrt(2)/25 l_e E
+  kLloydTetVolume,     ///< "lloyd-tet-volume": Eq. 14, springs plus volume terms
+  kStiffnessFit,       ///< "stiffness-fit": per element, non-negative least squares on ||K_FEM - K_MSM||_F
+  kStiffnessFitVolume  ///< "stiffness-fit-volume": the same with a volume term per tet (k_V fitted too)
+};
+
+Method method_from_name(std::string_view name);  ///< @throws InvalidArgument listing the names
+std::string_view method_name(Method method);
+
+/// Calibrates a mass-spring model on `mesh` (springs on the element edges; also the diagonals of quads).
+/// @param materials  one material, or one per element (E in Pa, nu, thickness t in m for 2D)
+/// @throws InvalidArgument when the method does not apply to the mesh's element kind
+SpringModel calibrate(const mesh::Mesh& mesh, const std::vector<material::Material>& materials, Method method);
+
+}  // namespace hooke::calibrate

@@ -1,0 +1,20 @@
+#include <hooke/calibrate/spring_model.hpp>
+#include <hooke/springs/spring_block.hpp>
+#include <hooke/springs/tet_volume_block.hpp>
+
+namespace hooke::calibrate {
+
+std::shared_ptr<model::Model> make_model(const mesh::Mesh& mesh, const SpringModel& s) {
+  auto m = std::make_shared<model::Model>(mesh.dim(), Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size()));
+  m->add(std::make_unique<springs::SpringBlock>(mesh.dim(), s.pairs, s.stiffness, s.rest_length));
+  if (s.volume_tets.rows() > 0)
+    m->add(std::make_unique<springs::TetVolumeBlock>(s.volume_tets, s.volume_stiffness, s.rest_volume));
+  return m;
+}
+
+SparseMatrix linearised_stiffness(const mesh::Mesh& mesh, const SpringModel& s) {
+  const auto m = make_model(mesh, s);
+  return m->hessian(m->rest_positions());
+}
+
+}  // namespace hooke::calibrate

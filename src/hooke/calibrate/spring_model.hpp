@@ -1,0 +1,27 @@
+#pragma once
+/// A calibrated mass-spring model as plain data, and its term blocks.
+#include <array>
+#include <hooke/mesh/mesh.hpp>
+#include <hooke/model/model.hpp>
+#include <memory>
+#include <vector>
+
+namespace hooke::calibrate {
+
+struct SpringModel {
+  int dim = 3;
+  std::vector<std::array<int, 2>> pairs;  ///< springs (i, j), i < j
+  VecX stiffness;                         ///< k per spring, N/m
+  VecX rest_length;                       ///< l0 per spring, m (prestrained where the method says so)
+  RowMatXi volume_tets;                   ///< #T x 4 tets with volume terms (empty when the method has none)
+  VecX volume_stiffness;                  ///< k_V per tet, J
+  VecX rest_volume;                       ///< V0 per tet, m^3
+};
+
+/// The model of `springs` on the rest positions of `mesh`: a SpringBlock plus, when present, a TetVolumeBlock.
+std::shared_ptr<model::Model> make_model(const mesh::Mesh& mesh, const SpringModel& springs);
+
+/// Linearised stiffness of `springs` at the rest positions (its Hessian there), N/m.
+SparseMatrix linearised_stiffness(const mesh::Mesh& mesh, const SpringModel& springs);
+
+}  // namespace hooke::calibrate

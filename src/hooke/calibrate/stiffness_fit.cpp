@@ -1,0 +1,116 @@
+#include <hooke/calibrate/detail/element_springs.hpp>
+#include <hooke/calibrate/stiffness_fit.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/fem/cst.hpp>
+#include <hooke/fem/quad4.hpp>
+#include <hooke/fem/tet4.hpp>
+#include <hooke/mesh/measure.hpp>
+#include <limits>
+
+namespace hooke::calibrate {
+namespace {
+
+// Hessian at rest of a unit-stiffness spring between local nodes a and b (Lloyd Eq. 6 with k = 1).
+MatX unit_spring(const MatX& p, int a, int b) {
+  const int d = static_cast<int>(p.cols()), n = static_cast<int>(p.rows());
+  const VecX u = (p.row(a) - p.row(b)).transpose().normalized();
+  const MatX blk = u * u.transpose();
+  MatX h = MatX::Zero(d * n, d * n);
+  h.block(d * a, d * a, d, d) = blk;
+  h.block(d * b, d * b, d, d) = blk;
+  h.block(d * a, d * b, d, d) = -blk;
+  h.block(d * b, d * a, d, d) = -blk;
+  return h;
+}
+
+// Hessian at rest of a unit-k_V volume term on a tet: g g^T / V0^2 (App. C, Eq. 18 at C = 0).
+MatX unit_volume(const MatX& p) {
+  const Vec3 e1 = (p.row(1) - p.row(0)).transpose(), e2 = (p.row(2) - p.row(0)).transpose(),
+             e3 = (p.row(3) - p.row(0)).transpose();
+  const double v0 = e1.dot(e2.cross(e3)) / 6.0;
+  VecX g(12);
+  g.segment<3>(3) = e2.cross(e3) / 6.0;
+  g.segment<3>(6) = e3.cross(e1) / 6.0;
+  g.segment<3>(9) = e1.cross(e2) / 6.0;
+  g.segment<3>(0) = -(g.segment<3>(3) + g.segment<3>(6) + g.segment<3>(9));
+  return g * g.transpose() / (v0 * v0);
+}
+
+}  // namespace
+
+VecX fit_nonnegative(const MatX& target, const std::vector<MatX>& bases, double* residual) {
+  const int n = static_cast<int>(bases.size());
+  if (n > 12) throw InvalidArgument("fit_nonnegative: at most 12 bases");
+  MatX g(n, n);
+  VecX b(n);
+  for (int s = 0; s < n; ++s) {
+    b(s) = (target.array() * bases[static_cast<size_t>(s)].array()).sum();
+    for (int t = 0; t < n; ++t)
+      g(s, t) = (bases[static_cast<size_t>(s)].array() * bases[static_cast<size_t>(t)].array()).sum();
+  }
+  const double tt = target.squaredNorm();
+  VecX best = VecX::Zero(n);
+  double best_sq = tt;
+  for (int mask = 1; mask < (1 << n); ++mask) {
+    std::vector<int> idx;
+    for (int s = 0; s < n; ++s)
+      if (mask & (1 << s)) idx.push_back(s);
+    const int m = static_cast<int>(idx.size());
+    MatX gs(m, m);
+    VecX bs(m);
+    for (int i = 0; i < m; ++i) {
+      bs(i) = b(idx[static_cast<size_t>(i)]);
+      for (int j = 0; j < m; ++j) gs(i, j) = g(idx[static_cast<size_t>(i)], idx[static_cast<size_t>(j)]);
+    }
+    const VecX cs = gs.completeOrthogonalDecomposition().solve(bs);
+    if ((cs.array() < 0.0).any()) continue;
+    const double sq = tt - 2.0 * cs.dot(bs) + cs.dot(gs * cs);
+    if (sq < best_sq) {
+      best_sq = sq;
+      best.setZero();
+      for (int i = 0; i < m; ++i) best(idx[static_cast<size_t>(i)]) = cs(i);
+    }
+  }
+  if (residual) *residual = std::sqrt(std::max(0.0, best_sq));
+  return best;
+}
+
+SpringModel stiffness_fit(const mesh::Mesh& m, const std::vector<material::Material>& materials,
+                          const StiffnessFitOptions& options) {
+  using mesh::ElementKind;
+  if (m.kind == ElementKind::kSurfaceTriangle)
+    throw InvalidArgument("stiffness-fit needs a triangle, quad or tet mesh");
+  if (options.volume_terms && m.kind != ElementKind::kTet) throw InvalidArgument("volume terms need a tet mesh");
+  detail::EdgeAccumulator acc(m);
+  const int npe = mesh::nodes_per_element(m.kind), d = m.dim();
+  VecX k_volume = VecX::Zero(options.volume_terms ? m.element_count() : 0);
+  for (int e = 0; e < m.element_count(); ++e) {
+    const material::Material& mat = materials.size() == 1 ? materials[0] : materials[static_cast<size_t>(e)];
+    MatX p(npe, d);
+    for (int a = 0; a < npe; ++a) p.row(a) = m.nodes.row(m.elements(e, a));
+    MatX k_fem;
+    if (m.kind == ElementKind::kTet)
+      k_fem = fem::tet4_stiffness(p, mat);
+    else if (m.kind == ElementKind::kQuad)
+      k_fem = fem::quad4_stiffness(p, mat);
+    else
+      k_fem = fem::cst_stiffness(p, mat);
+    std::vector<MatX> bases;
+    for (const auto& lp : acc.local_pairs()) bases.push_back(unit_spring(p, lp[0], lp[1]));
+    if (options.volume_terms) bases.push_back(unit_volume(p));
+    const VecX c = fit_nonnegative(k_fem, bases);
+    const std::vector<int> springs = acc.element_springs(e);
+    for (size_t s = 0; s < springs.size(); ++s) acc.add(springs[s], c(static_cast<Eigen::Index>(s)));
+    if (options.volume_terms) k_volume(e) = c(static_cast<Eigen::Index>(springs.size()));
+  }
+  SpringModel out = acc.finish();
+  if (options.volume_terms) {
+    out.volume_tets = m.elements;
+    out.volume_stiffness = k_volume;
+    out.rest_volume.resize(m.element_count());
+    for (int e = 0; e < m.element_count(); ++e) out.rest_volume(e) = mesh::element_measure(m, e);
+  }
+  return out;
+}
+
+}  // namespace hooke::calibrate

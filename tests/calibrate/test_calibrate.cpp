@@ -1,0 +1,108 @@
+// Calibrated springs against the numerically assembled FEM stiffness, and the paper's coefficients against
+// the numerical identification (stiffness-fit) on the regular shapes they were derived for.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <hooke/calibrate/method.hpp>
+#include <hooke/calibrate/stiffness_fit.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/fem/elastic_block.hpp>
+#include <hooke/mesh/generators.hpp>
+#include <hooke/mesh/topology.hpp>
+#include <iostream>
+
+namespace hooke::calibrate {
+namespace {
+
+using material::Law;
+using material::Material;
+using material::Plane;
+
+SparseMatrix fem_stiffness(const mesh::Mesh& m, const Material& mat) {
+  model::Model model(m.dim(), Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size()));
+  model.add(fem::make_elastic_block(m, mat));
+  return model.hessian(model.rest_positions());
+}
+
+mesh::Mesh regular_tet(double l) {
+  RowMatX p(4, 3);
+  p << 0, 0, 0, l, 0, 0, l / 2, l * std::sqrt(3.0) / 2, 0, l / 2, l * std::sqrt(3.0) / 6, l * std::sqrt(2.0 / 3.0);
+  RowMatXi t(1, 4);
+  t << 0, 1, 2, 3;
+  return mesh::make_mesh(mesh::ElementKind::kTet, p, t, "regular tet");
+}
+
+TEST(Calibrate, MethodNamesRoundTrip) {
+  for (const char* n : {"vangelder", "lloyd-equilateral", "lloyd-triangle", "lloyd-square", "lloyd-tet",
+                        "lloyd-tet-volume", "stiffness-fit", "stiffness-fit-volume"})
+    EXPECT_EQ(method_name(method_from_name(n)), n);
+  EXPECT_THROW(method_from_name("hand-tuned"), InvalidArgument);
+  EXPECT_THROW(calibrate(mesh::rectangle_quads(1, 1, 2, 2), {{Law::kLinear, 1.0, 0.3}}, Method::kLloydTet),
+               InvalidArgument);
+}
+
+// Lloyd Sec. 3.3 and Eq. 8 on a whole membrane: the assembled spring stiffness equals the assembled CST
+// stiffness at nu = 1/3 (interior springs sum two triangles, boundary springs one).
+TEST(LloydEquilateral, MembraneSpringsEqualAssembledCstAtNuOneThird) {
+  const mesh::Mesh m = mesh::equilateral_membrane(7, 6, 0.01);
+  const Material mat{Law::kLinear, 14630.0, 1.0 / 3.0, Plane::kStress, 0.001};
+  const SpringModel s = calibrate(m, {mat}, Method::kLloydEquilateral);
+  EXPECT_EQ(s.pairs.size(), 92u);
+  const SparseMatrix k_fem = fem_stiffness(m, mat);
+  EXPECT_LT(MatX(linearised_stiffness(m, s) - k_fem).norm(), 1e-12 * MatX(k_fem).norm());
+}
+
+// Eq. 9 is van Gelder's formula rewritten (Lloyd Sec. 3.5): identical springs on any triangle mesh.
+TEST(LloydTriangle, EqualsVanGelderOnTriangles) {
+  const mesh::Mesh m = mesh::rectangle_triangles(0.05, 0.03, 5, 4);
+  const Material mat{Law::kLinear, 14630.0, 0.3, Plane::kStress, 0.002};
+  const SpringModel a = calibrate(m, {mat}, Method::kLloydTriangle), b = calibrate(m, {mat}, Method::kVanGelder);
+  EXPECT_LT((a.stiffness - b.stiffness).norm(), 1e-12 * a.stiffness.norm());
+}
+
+// Eq. 10-11 on a 5 x 5 square mesh (Lloyd Sec. 5.3: 36 nodes, 110 springs) equals the assembled Q4 matrix at
+// nu = 1/3 and is in equilibrium at rest.
+TEST(LloydSquare, MeshEqualsAssembledBilinearQuadsAtNuOneThird) {
+  const mesh::Mesh m = mesh::rectangle_quads(0.05, 0.05, 5, 5);
+  const Material mat{Law::kLinear, 14630.0, 1.0 / 3.0, Plane::kStress, 0.001};
+  const SpringModel s = calibrate(m, {mat}, Method::kLloydSquare);
+  EXPECT_EQ(s.pairs.size(), 110u);
+  const auto model = make_model(m, s);
+  EXPECT_LT(model->gradient(model->rest_positions()).norm(), 1e-12 * 14630.0 * 0.001 * 0.01);
+  const SparseMatrix k_fem = fem_stiffness(m, mat);
+  EXPECT_LT(MatX(linearised_stiffness(m, s) - k_fem).norm(), 1e-12 * MatX(k_fem).norm());
+}
+
+TEST(StiffnessFit, RecoversEquation8ExactlyOnTheEquilateralTriangle) {
+  const mesh::Mesh m = mesh::equilateral_membrane(2, 2, 0.01);
+  ASSERT_EQ(m.element_count(), 1);
+  const Material mat{Law::kLinear, 14630.0, 1.0 / 3.0, Plane::kStress, 0.001};
+  const SpringModel s = stiffness_fit(m, {mat});
+  for (Eigen::Index i = 0; i < s.stiffness.size(); ++i)
+    EXPECT_NEAR(s.stiffness(i), 14630.0 * 0.001 * std::sqrt(3.0) / 4.0, 1e-12);
+}
+
+// Lloyd Eq. 12: the least-squares optimal spring on a regular tet at nu = 1/4 is k = 2 sqrt(2)/25 l E.
+TEST(StiffnessFit, RegularTetAtNuOneQuarterGivesEquation12) {
+  const double l = 0.01, e = 14630.0;
+  const SpringModel s = stiffness_fit(regular_tet(l), {{Law::kLinear, e, 0.25}});
+  const double eq12 = 2.0 * std::sqrt(2.0) / 25.0 * l * e;
+  std::cout << "[tet] stiffness-fit k / (l E) = " << s.stiffness(0) / (l * e) << ", Eq. 12: " << eq12 / (l * e) << "\n";
+  for (Eigen::Index i = 0; i < 6; ++i) EXPECT_NEAR(s.stiffness(i), eq12, 1e-9 * eq12);
+}
+
+// Lloyd Eq. 14: springs and a volume term fitted together on the regular tet at nu = 1/4.
+TEST(StiffnessFit, RegularTetWithVolumeTermGivesEquation14) {
+  const double l = 0.01, e = 14630.0;
+  const SpringModel s = stiffness_fit(regular_tet(l), {{Law::kLinear, e, 0.25}}, {.volume_terms = true});
+  const double k14 = 2.0 * std::sqrt(2.0) / 21.0 * 4.0 / 5.0 * l * e,
+               kv14 = std::sqrt(2.0) / 84.0 * l * l * l * e * 2.0 / 5.0;
+  std::cout << "[tet+volume] stiffness-fit k / (l E) = " << s.stiffness(0) / (l * e) << " (Eq. 14: " << k14 / (l * e)
+            << "), k_V / (l^3 E) = " << s.volume_stiffness(0) / (l * l * l * e)
+            << " (Eq. 14: " << kv14 / (l * l * l * e) << ")\n";
+  for (Eigen::Index i = 0; i < 6; ++i) EXPECT_NEAR(s.stiffness(i), k14, 1e-9 * k14);
+  EXPECT_NEAR(s.volume_stiffness(0), kv14, 1e-9 * kv14);
+}
+
+}  // namespace
+}  // namespace hooke::calibrate
