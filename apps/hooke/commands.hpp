@@ -9,6 +9,8 @@ using Action = std::function<int()>;
 
 /// `hooke fem`: linear or nonlinear FEM reference solve of a load case.
 Action add_fem_command(CLI::App& app);
+/// `hooke compare`: a calibrated spring model against the FEM reference.
+Action add_compare_command(CLI::App& app);
 /// `hooke mesh info|convert`: inspect and convert meshes.
 Action add_mesh_command(CLI::App& app);
 

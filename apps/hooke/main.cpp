@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "hooke 0.1.0");
   const hooke::cli::Action fem = hooke::cli::add_fem_command(app);
   const hooke::cli::Action mesh = hooke::cli::add_mesh_command(app);
+  const hooke::cli::Action compare = hooke::cli::add_compare_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("fem")) return fem();
     if (app.got_subcommand("mesh")) return mesh();
+    if (app.got_subcommand("compare")) return compare();
   } catch (const hooke::SolverFailure& e) {
     std::fprintf(stderr, "hooke: solver failure: %s\n", e.what());
     return 3;

@@ -106,3 +106,35 @@ TEST(StiffnessFit, RegularTetWithVolumeTermGivesEquation14) {
 
 }  // namespace
 }  // namespace hooke::calibrate
+
+#include <hooke/experiments/compare.hpp>
+#include <hooke/io/mesh_io.hpp>
+
+namespace hooke::calibrate {
+namespace {
+
+// The cylinder of Lloyd Fig. 15 with Eq. 12 springs: errors of the order the paper reports (0.039 cm max for
+// stretch, 0.088 cm for shear), and a compression past the spring model's limit load is not "solved".
+TEST(CompareCylinder, LloydTetErrorsOfThePapersOrderAndNoCollapsedAnswer) {
+  const mesh::Mesh m = io::read_mesh(HOOKE_MESH_DATA "/cylinder.msh");
+  const Material mat{Law::kLinear, 14630.0, 0.25};
+  experiments::CompareOptions o;
+  o.method = Method::kLloydTet;
+  o.strain = 0.12;
+  for (auto load : {experiments::LoadKind::kStretch, experiments::LoadKind::kShear}) {
+    o.load = load;
+    const auto c = experiments::compare(m, {mat}, o);
+    ASSERT_EQ(c.spring_report.status, solve::SolveStatus::kConverged) << c.spring_report.message;
+    std::cout << "[cylinder] " << experiments::load_kind_name(load) << ": max " << 100 * c.max_error << " cm, mean "
+              << 100 * c.mean_error << " cm\n";
+    EXPECT_LT(c.max_error, 2.0 * 0.00088);
+    EXPECT_GT(c.max_error, 0.5 * 0.00039);
+  }
+  o.load = experiments::LoadKind::kCompress;
+  const auto c = experiments::compare(m, {mat}, o);
+  EXPECT_NE(c.spring_report.status, solve::SolveStatus::kConverged) << "a collapsed spring model was reported";
+  EXPECT_TRUE(std::isfinite(make_model(m, c.springs)->energy(c.spring_positions)));
+}
+
+}  // namespace
+}  // namespace hooke::calibrate

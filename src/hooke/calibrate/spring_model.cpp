@@ -1,4 +1,5 @@
 #include <hooke/calibrate/spring_model.hpp>
+#include <hooke/model/orientation_guard.hpp>
 #include <hooke/springs/spring_block.hpp>
 #include <hooke/springs/tet_volume_block.hpp>
 
@@ -9,6 +10,8 @@ std::shared_ptr<model::Model> make_model(const mesh::Mesh& mesh, const SpringMod
   m->add(std::make_unique<springs::SpringBlock>(mesh.dim(), s.pairs, s.stiffness, s.rest_length));
   if (s.volume_tets.rows() > 0)
     m->add(std::make_unique<springs::TetVolumeBlock>(s.volume_tets, s.volume_stiffness, s.rest_volume));
+  // Springs alone admit a body turned inside out as an "equilibrium"; like the FEM, never accept one.
+  if (mesh.kind != mesh::ElementKind::kSurfaceTriangle) m->add(std::make_unique<model::OrientationGuard>(mesh));
   return m;
 }
 

@@ -18,7 +18,8 @@ struct SpringModel {
   VecX rest_volume;                       ///< V0 per tet, m^3
 };
 
-/// The model of `springs` on the rest positions of `mesh`: a SpringBlock plus, when present, a TetVolumeBlock.
+/// The model of `springs` on the rest positions of `mesh`: a SpringBlock plus, when present, a TetVolumeBlock,
+/// and an OrientationGuard on the mesh's elements (states with an inverted element are inadmissible).
 std::shared_ptr<model::Model> make_model(const mesh::Mesh& mesh, const SpringModel& springs);
 
 /// Linearised stiffness of `springs` at the rest positions (its Hessian there), N/m.

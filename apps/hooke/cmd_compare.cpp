@@ -1,0 +1,89 @@
+// hooke compare MESH --young PA --poisson NU --method NAME --load CASE (--traction PA | --strain S) [-o DIR]:
+// a calibrated spring model against the FEM reference on one load case.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <hooke/core/error.hpp>
+#include <hooke/core/units.hpp>
+#include <hooke/experiments/compare.hpp>
+#include <hooke/io/mesh_io.hpp>
+#include <hooke/io/vtu.hpp>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+
+namespace hooke::cli {
+namespace {
+
+struct CompareCli {
+  std::string mesh_path, method = "lloyd-tet", load = "stretch", reference = "linear", unit = "m", out_dir,
+                         plane = "stress";
+  double young = 0.0, poisson = 0.0, thickness = 1e-3, traction = std::nan(""), strain = std::nan("");
+};
+
+int run_compare(const CompareCli& o) {
+  io::ReadOptions ro;
+  ro.metres_per_unit = metres_per_unit(o.unit);
+  const mesh::Mesh m = io::read_mesh(o.mesh_path, ro);
+  material::Material mat{material::Law::kLinear, o.young, o.poisson,
+                         o.plane == "strain" ? material::Plane::kStrain : material::Plane::kStress, o.thickness};
+  material::validate(mat);
+  if (std::isnan(o.traction) == std::isnan(o.strain))
+    throw InvalidArgument("give exactly one of --traction and --strain");
+  experiments::CompareOptions co;
+  co.method = calibrate::method_from_name(o.method);
+  co.load = experiments::load_kind_from_name(o.load);
+  co.reference = material::law_from_name(o.reference);
+  co.traction_pa = std::isnan(o.traction) ? 0.0 : o.traction;
+  co.strain = std::isnan(o.strain) ? 0.0 : o.strain;
+  const experiments::Comparison c = experiments::compare(m, {mat}, co);
+  const double to_unit = 1.0 / ro.metres_per_unit;
+  std::printf("hooke compare: %s, %s springs (%zu) vs %s FEM, %s, traction %.6g Pa\n", o.mesh_path.c_str(),
+              o.method.c_str(), c.springs.pairs.size(), o.reference.c_str(), o.load.c_str(), c.load.traction_pa);
+  std::printf("  fem       %s: %s\n", std::string(solve::status_name(c.fem_report.status)).c_str(),
+              c.fem_report.message.c_str());
+  std::printf("  springs   %s: %s\n", std::string(solve::status_name(c.spring_report.status)).c_str(),
+              c.spring_report.message.c_str());
+  solve::require_converged(c.fem_report);
+  solve::require_converged(c.spring_report);
+  std::printf("  error     max %.4g %s (%.3f %% of height), mean %.4g %s (%.3f %% of height)\n", c.max_error * to_unit,
+              o.unit.c_str(), 100.0 * c.max_error / c.load.height, c.mean_error * to_unit, o.unit.c_str(),
+              100.0 * c.mean_error / c.load.height);
+  if (!o.out_dir.empty()) {
+    std::filesystem::create_directories(o.out_dir);
+    const VecX rest = Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size());
+    const std::string path = (std::filesystem::path(o.out_dir) / "compare.vtu").string();
+    io::write_vtu(path, m,
+                  {{"fem_displacement", m.dim(), c.fem_positions - rest},
+                   {"spring_displacement", m.dim(), c.spring_positions - rest},
+                   {"node_error", 1, c.node_error}});
+    std::printf("  wrote     %s\n", path.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+Action add_compare_command(CLI::App& app) {
+  auto o = std::make_shared<CompareCli>();
+  CLI::App* cmd = app.add_subcommand("compare", "Compare a calibrated spring model with the FEM reference");
+  cmd->add_option("mesh", o->mesh_path, "Mesh file")->required();
+  cmd->add_option("--young", o->young, "Young's modulus E, Pa")->required();
+  cmd->add_option("--poisson", o->poisson, "Poisson's ratio nu, in (-1, 0.5)")->required();
+  cmd->add_option("--method", o->method,
+                  "Calibration method (vangelder, lloyd-equilateral, lloyd-triangle, lloyd-square, "
+                  "lloyd-tet, lloyd-tet-volume, stiffness-fit, stiffness-fit-volume)")
+      ->capture_default_str();
+  cmd->add_option("--load", o->load, "stretch, compress or shear")->capture_default_str();
+  cmd->add_option("--traction", o->traction, "Traction on the top boundary, Pa");
+  cmd->add_option("--strain", o->strain, "Traction giving this mean top strain in the linear FEM");
+  cmd->add_option("--reference", o->reference, "FEM law: linear, stvk or neohookean")->capture_default_str();
+  cmd->add_option("--unit", o->unit, "Length unit of the mesh file and of the printed errors")->capture_default_str();
+  cmd->add_option("--thickness", o->thickness, "Plate thickness for 2D meshes, m")->capture_default_str();
+  cmd->add_option("--plane", o->plane, "2D model: stress or strain")->capture_default_str();
+  cmd->add_option("-o,--output", o->out_dir, "Folder for compare.vtu (both displacement fields and the node error)");
+  return [o] { return run_compare(*o); };
+}
+
+}  // namespace hooke::cli

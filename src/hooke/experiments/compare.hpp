@@ -1,0 +1,35 @@
+#pragma once
+/// A spring model against the FEM reference on one load case (Lloyd et al. 2007, Sec. 5).
+#include <hooke/calibrate/method.hpp>
+#include <hooke/experiments/load_case.hpp>
+#include <hooke/solve/static_equilibrium.hpp>
+
+namespace hooke::experiments {
+
+struct CompareOptions {
+  calibrate::Method method = calibrate::Method::kLloydTet;  ///< how the springs are calibrated
+  LoadKind load = LoadKind::kStretch;                       ///< load case
+  double traction_pa = 0.0;                                 ///< traction, Pa (ignored when strain > 0)
+  double strain = 0.0;                                      ///< > 0: traction giving this mean linear-FEM strain
+  material::Law reference = material::Law::kLinear;         ///< FEM reference law
+};
+
+struct Comparison {
+  LoadCase load;            ///< the boundary conditions both models saw
+  VecX fem_positions;       ///< FEM equilibrium, flat, m
+  VecX spring_positions;    ///< spring-model equilibrium, flat, m
+  VecX node_error;          ///< |x_spring - x_fem| per node, m
+  double max_error = 0.0;   ///< m
+  double mean_error = 0.0;  ///< m
+  solve::SolveReport fem_report, spring_report;
+  calibrate::SpringModel springs;
+};
+
+/// Applies the same nodal forces and clamped nodes to the FEM reference and to the calibrated spring model,
+/// solves both (linear FEM: one linear solve; otherwise Newton with the stability check) and measures the
+/// Euclidean node distance. Both reports must be kConverged for the errors to mean anything: check them.
+/// @param materials  one material, or one per element (the law is taken from options.reference)
+Comparison compare(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
+                   const CompareOptions& options);
+
+}  // namespace hooke::experiments
