@@ -7,7 +7,7 @@
 #include <hooke/mesh/generators.hpp>
 #include <hooke/model/model.hpp>
 #include <random>
-#include <support/finite_difference.hpp>
+#include <support/block_checks.hpp>
 #include <support/meshes.hpp>
 
 namespace hooke::fem {
@@ -37,21 +37,7 @@ TEST_P(ElasticBlockDerivatives, MatchFiniteDifferences) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   VecX x = test::flat_positions(m);
   for (Eigen::Index i = 0; i < x.size(); ++i) x(i) += 0.0015 * u(rng);  // ~5-10 % strains
-  auto energy = [&](const VecX& y) { return block.energy(y); };
-  auto gradient = [&](const VecX& y) {
-    VecX g = VecX::Zero(y.size());
-    block.add_gradient(y, g);
-    return g;
-  };
-  const VecX g = gradient(x);
-  const VecX g_fd = test::fd_gradient(energy, x, 1e-7);
-  EXPECT_LT((g - g_fd).norm(), 1e-6 * g.norm());
-  std::vector<Triplet> t;
-  block.add_hessian(x, t, false);
-  SparseMatrix h(x.size(), x.size());
-  h.setFromTriplets(t.begin(), t.end());
-  const MatX h_fd = test::fd_jacobian(gradient, x, 1e-7);
-  EXPECT_LT((MatX(h) - h_fd).norm(), 1e-6 * h_fd.norm());
+  test::expect_derivatives_match_finite_differences(block, x, 1e-7, 1e-6);
 }
 
 TEST_P(ElasticBlockDerivatives, ProjectedHessianIsPositiveSemiDefinite) {

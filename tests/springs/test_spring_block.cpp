@@ -9,7 +9,7 @@
 #include <hooke/fem/quad4.hpp>
 #include <hooke/springs/spring_block.hpp>
 #include <random>
-#include <support/finite_difference.hpp>
+#include <support/block_checks.hpp>
 
 namespace hooke::springs {
 namespace {
@@ -37,15 +37,7 @@ TEST(SpringBlock, GradientAndHessianMatchFiniteDifferences) {
       l0(s) = (x.segment(dim * i, dim) - x.segment(dim * j, dim)).norm() * (s % 2 ? 1.2 : 0.85);  // both signs
     }
     const SpringBlock b(dim, pairs, k, l0);
-    auto energy = [&](const VecX& y) { return b.energy(y); };
-    auto gradient = [&](const VecX& y) {
-      VecX g = VecX::Zero(y.size());
-      b.add_gradient(y, g);
-      return g;
-    };
-    EXPECT_LT((gradient(x) - test::fd_gradient(energy, x, 1e-8)).norm(), 1e-6 * gradient(x).norm());
-    const MatX h_fd = test::fd_jacobian(gradient, x, 1e-8);
-    EXPECT_LT((MatX(hessian(b, x)) - h_fd).norm(), 1e-6 * h_fd.norm());
+    test::expect_derivatives_match_finite_differences(b, x, 1e-8, 1e-6);
     Eigen::SelfAdjointEigenSolver<MatX> eig{MatX(hessian(b, x, true))};
     EXPECT_GT(eig.eigenvalues().minCoeff(), -1e-9 * eig.eigenvalues().maxCoeff());
   }
@@ -130,19 +122,7 @@ TEST(TetVolumeBlock, GradientAndHessianMatchFiniteDifferences) {
   VecX x = Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size());
   EXPECT_DOUBLE_EQ(b.energy(x), 0.0);
   for (Eigen::Index i = 0; i < x.size(); ++i) x(i) += 0.001 * u(rng);
-  auto energy = [&](const VecX& y) { return b.energy(y); };
-  auto gradient = [&](const VecX& y) {
-    VecX g = VecX::Zero(y.size());
-    b.add_gradient(y, g);
-    return g;
-  };
-  EXPECT_LT((gradient(x) - test::fd_gradient(energy, x, 1e-8)).norm(), 1e-6 * gradient(x).norm());
-  std::vector<Triplet> t;
-  b.add_hessian(x, t, false);
-  SparseMatrix h(x.size(), x.size());
-  h.setFromTriplets(t.begin(), t.end());
-  const MatX h_fd = test::fd_jacobian(gradient, x, 1e-8);
-  EXPECT_LT((MatX(h) - h_fd).norm(), 1e-6 * h_fd.norm());
+  test::expect_derivatives_match_finite_differences(b, x, 1e-8, 1e-6);
 }
 
 }  // namespace
