@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   const hooke::cli::Action fem = hooke::cli::add_fem_command(app);
   const hooke::cli::Action mesh = hooke::cli::add_mesh_command(app);
   const hooke::cli::Action compare = hooke::cli::add_compare_command(app);
+  const hooke::cli::Action reproduce = hooke::cli::add_reproduce_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("fem")) return fem();
     if (app.got_subcommand("mesh")) return mesh();
     if (app.got_subcommand("compare")) return compare();
+    if (app.got_subcommand("reproduce")) return reproduce();
   } catch (const hooke::SolverFailure& e) {
     std::fprintf(stderr, "hooke: solver failure: %s\n", e.what());
     return 3;
