@@ -5,6 +5,7 @@
 #include <hooke/fem/quad4.hpp>
 #include <hooke/fem/tet4.hpp>
 #include <hooke/mesh/measure.hpp>
+#include <hooke/springs/tet_volume_block.hpp>
 #include <limits>
 
 namespace hooke::calibrate {
@@ -25,14 +26,12 @@ MatX unit_spring(const MatX& p, int a, int b) {
 
 // Hessian at rest of a unit-k_V volume term on a tet: g g^T / V0^2 (App. C, Eq. 18 at C = 0).
 MatX unit_volume(const MatX& p) {
-  const Vec3 e1 = (p.row(1) - p.row(0)).transpose(), e2 = (p.row(2) - p.row(0)).transpose(),
-             e3 = (p.row(3) - p.row(0)).transpose();
-  const double v0 = e1.dot(e2.cross(e3)) / 6.0;
-  VecX g(12);
-  g.segment<3>(3) = e2.cross(e3) / 6.0;
-  g.segment<3>(6) = e3.cross(e1) / 6.0;
-  g.segment<3>(9) = e1.cross(e2) / 6.0;
-  g.segment<3>(0) = -(g.segment<3>(3) + g.segment<3>(6) + g.segment<3>(9));
+  const Eigen::Matrix<double, 3, 4> corners = p.transpose();
+  const Eigen::Matrix<double, 3, 4> grad = springs::tet_volume_gradient(corners);
+  const double v0 =
+      (corners.col(1) - corners.col(0)).dot((corners.col(2) - corners.col(0)).cross(corners.col(3) - corners.col(0))) /
+      6.0;
+  const Eigen::Map<const Eigen::Matrix<double, 12, 1>> g(grad.data());
   return g * g.transpose() / (v0 * v0);
 }
 

@@ -17,11 +17,13 @@ double volume(const Mat34& p) {
   return (p.col(1) - p.col(0)).dot((p.col(2) - p.col(0)).cross(p.col(3) - p.col(0))) / 6.0;
 }
 
+}  // namespace
+
 // dV/dp_a in column a. From V = e1 . (e2 x e3) / 6 with e_k = p_{k+1} - p1: dV/dp2 = e2 x e3 / 6,
 // dV/dp3 = e3 x e1 / 6, dV/dp4 = e1 x e2 / 6, dV/dp1 = -(their sum). Erratum: Lloyd App. C.2 prints
 // (p2 - p4) x (p3 - p4) for p1 and (p4 - p2) x (p1 - p2) for p3, both of the wrong sign (on the unit tet the
 // first gives +(1,1,1)/6, although moving p1 towards its opposite face shrinks V); see docs/methods/springs.md.
-Mat34 volume_gradient(const Mat34& p) {
+Mat34 tet_volume_gradient(const Mat34& p) {
   const Vec3 e1 = p.col(1) - p.col(0), e2 = p.col(2) - p.col(0), e3 = p.col(3) - p.col(0);
   Mat34 g;
   g.col(1) = e2.cross(e3) / 6.0;
@@ -30,6 +32,8 @@ Mat34 volume_gradient(const Mat34& p) {
   g.col(0) = -(g.col(1) + g.col(2) + g.col(3));
   return g;
 }
+
+namespace {
 
 Mat3 cross_matrix(const Vec3& v) {
   Mat3 m;
@@ -80,7 +84,7 @@ void TetVolumeBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<Ve
   for (int t = 0; t < m_tets.rows(); ++t) {
     const Mat34 p = corners(x, m_tets, t);
     const double v0 = m_rest_volume(t);
-    const Mat34 g = m_stiffness(t) * (volume(p) - v0) / (v0 * v0) * volume_gradient(p);
+    const Mat34 g = m_stiffness(t) * (volume(p) - v0) / (v0 * v0) * tet_volume_gradient(p);
     for (int a = 0; a < 4; ++a) gradient.segment<3>(3 * m_tets(t, a)) += g.col(a);
   }
 }
@@ -91,7 +95,7 @@ void TetVolumeBlock::add_hessian(const Eigen::Ref<const VecX>& x, std::vector<Tr
   for (int t = 0; t < m_tets.rows(); ++t) {
     const Mat34 p = corners(x, m_tets, t);
     const double v0 = m_rest_volume(t), scale = m_stiffness(t) / (v0 * v0);
-    const Mat34 grad = volume_gradient(p);
+    const Mat34 grad = tet_volume_gradient(p);
     const Eigen::Map<const Eigen::Matrix<double, 12, 1>> g(grad.data());
     Mat12 h = scale * (g * g.transpose() + (volume(p) - v0) * volume_hessian(p));
     if (project_psd) hooke::detail::project_to_psd(h);

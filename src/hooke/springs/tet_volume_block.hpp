@@ -7,6 +7,11 @@ namespace hooke::springs {
 /// Energy of one tet: E_V = k_V / (2 V0^2) (V - V0)^2, J, with V = (p2 - p1) . ((p3 - p1) x (p4 - p1)) / 6.
 /// k_V in J (N m), volumes in m^3. Gradient: k_V (V - V0)/V0^2 dV/dx (App. C, Eq. 17 with C = (V - V0)/V0);
 /// Hessian: k_V/V0^2 (dV dV^T + (V - V0) d2V), the second term vanishing at rest (Eq. 18).
+/// Gradient of a tet's volume, dV/dp_a in column a (m^2), corners p in columns (m), any orientation.
+/// From V = e1 . (e2 x e3) / 6 with e_k = p_{k+1} - p1 (App. C.2 with its sign erratum corrected, see
+/// docs/methods/springs.md).
+Eigen::Matrix<double, 3, 4> tet_volume_gradient(const Eigen::Matrix<double, 3, 4>& corners);
+
 class TetVolumeBlock final : public model::TermBlock {
  public:
   /// @param tets        #T x 4 node indices of positively oriented tets
