@@ -20,18 +20,10 @@ struct Case {
   mesh::ElementKind kind;
 };
 
-mesh::Mesh mesh_for(mesh::ElementKind kind) {
-  switch (kind) {
-    case mesh::ElementKind::kTriangle: return test::perturb_interior(mesh::rectangle_triangles(0.02, 0.03, 3, 3), 0.2);
-    case mesh::ElementKind::kQuad: return test::perturb_interior(mesh::rectangle_quads(0.02, 0.03, 3, 3), 0.2);
-    default: return test::perturb_interior(mesh::tet_box(0.02, 0.02, 0.03, 2, 2, 2), 0.15);
-  }
-}
-
 class ElasticBlockDerivatives : public ::testing::TestWithParam<Case> {};
 
 TEST_P(ElasticBlockDerivatives, MatchFiniteDifferences) {
-  const mesh::Mesh m = mesh_for(GetParam().kind);
+  const mesh::Mesh m = test::irregular_mesh(GetParam().kind, 3, 0.2);
   const ElasticBlock block(m, {material::Material{GetParam().law, 14630.0, 0.3, material::Plane::kStress, 0.01}});
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -41,7 +33,7 @@ TEST_P(ElasticBlockDerivatives, MatchFiniteDifferences) {
 }
 
 TEST_P(ElasticBlockDerivatives, ProjectedHessianIsPositiveSemiDefinite) {
-  const mesh::Mesh m = mesh_for(GetParam().kind);
+  const mesh::Mesh m = test::irregular_mesh(GetParam().kind, 3, 0.2);
   const ElasticBlock block(m, {material::Material{GetParam().law, 1000.0, 0.3}});
   VecX x = test::flat_positions(m);
   x *= 0.8;  // a strong uniform compression makes StVK indefinite
@@ -66,7 +58,7 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 TEST(ElasticBlock, NonlinearEnergyInvariantUnderRigidRotation) {
-  const mesh::Mesh m = mesh_for(mesh::ElementKind::kTet);
+  const mesh::Mesh m = test::irregular_mesh(mesh::ElementKind::kTet, 3, 0.2);
   const Mat3 r = test::random_rotation();
   VecX x = test::flat_positions(m);
   std::mt19937 rng(5);

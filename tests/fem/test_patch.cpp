@@ -20,18 +20,10 @@ struct PatchCase {
   Law law;
 };
 
-mesh::Mesh irregular(mesh::ElementKind kind) {
-  switch (kind) {
-    case mesh::ElementKind::kTriangle: return test::perturb_interior(mesh::rectangle_triangles(0.05, 0.04, 5, 4), 0.3);
-    case mesh::ElementKind::kQuad: return test::perturb_interior(mesh::rectangle_quads(0.05, 0.04, 5, 4), 0.3);
-    default: return test::perturb_interior(mesh::tet_box(0.03, 0.03, 0.03, 3, 3, 3), 0.25);
-  }
-}
-
 class PatchTest : public ::testing::TestWithParam<PatchCase> {};
 
 TEST_P(PatchTest, LinearFieldReproducedExactly) {
-  const mesh::Mesh m = irregular(GetParam().kind);
+  const mesh::Mesh m = test::irregular_mesh(GetParam().kind, 5, 0.3);
   const int d = m.dim();
   std::mt19937 rng(21);
   std::uniform_real_distribution<double> u(-0.08, 0.08);

@@ -1,3 +1,4 @@
+#include <hooke/mesh/generators.hpp>
 #include <hooke/mesh/topology.hpp>
 #include <hooke/mesh/validate.hpp>
 #include <random>
@@ -22,6 +23,20 @@ mesh::Mesh perturb_interior(mesh::Mesh m, double fraction, unsigned seed) {
   }
   mesh::validate(m);
   return m;
+}
+
+mesh::Mesh irregular_mesh(mesh::ElementKind kind, int cells, double fraction) {
+  const double h = 0.005;
+  switch (kind) {
+    case mesh::ElementKind::kTriangle:
+      return perturb_interior(mesh::rectangle_triangles(h * cells, h * (cells + 1), cells, cells + 1), fraction);
+    case mesh::ElementKind::kQuad:
+      return perturb_interior(mesh::rectangle_quads(h * cells, h * (cells + 1), cells, cells + 1), fraction);
+    default: {
+      const int n = std::max(2, 2 * cells / 3);
+      return perturb_interior(mesh::tet_box(h * n, h * n, h * (n + 1), n, n, n + 1), fraction);
+    }
+  }
 }
 
 VecX flat_positions(const mesh::Mesh& m) { return Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size()); }

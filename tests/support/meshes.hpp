@@ -9,6 +9,10 @@ namespace hooke::test {
 // coordinate, with a fixed seed, keeping elements valid. Boundary nodes stay (so boundaries stay flat).
 mesh::Mesh perturb_interior(mesh::Mesh mesh, double fraction, unsigned seed = 7);
 
+// An irregular mesh of `kind` (triangle, quad or tet): a box of `cells` cells per side (cell size 5 mm;
+// the tet box has two thirds as many cells across) with interior nodes moved by `fraction` of an edge.
+mesh::Mesh irregular_mesh(mesh::ElementKind kind, int cells, double fraction);
+
 // Flat node-major positions of a mesh.
 VecX flat_positions(const mesh::Mesh& mesh);
 
