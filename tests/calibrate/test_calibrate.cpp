@@ -73,6 +73,45 @@ TEST(LloydSquare, MeshEqualsAssembledBilinearQuadsAtNuOneThird) {
   EXPECT_LT(MatX(linearised_stiffness(m, s) - k_fem).norm(), 1e-12 * MatX(k_fem).norm());
 }
 
+// Lloyd Eq. 10-11 from the numerical identification: on a square at nu = 1/3 the fitted edge and diagonal
+// springs, with their prestrain, are 5/16 t E (l0 = 6/5 l) and 7/16 t E (l0 = 6/7 l), and match Q4 exactly.
+TEST(StiffnessFit, SquareAtNuOneThirdGivesEquations10And11WithPrestrain) {
+  const mesh::Mesh m = mesh::rectangle_quads(0.01, 0.01, 1, 1);
+  const Material mat{Law::kLinear, 14630.0, 1.0 / 3.0, Plane::kStress, 0.001};
+  const SpringModel s = stiffness_fit(m, {mat});
+  const SpringModel paper = calibrate(m, {mat}, Method::kLloydSquare);
+  ASSERT_EQ(s.pairs, paper.pairs);
+  const double et = 14630.0 * 0.001;
+  for (Eigen::Index i = 0; i < s.stiffness.size(); ++i) {
+    EXPECT_NEAR(s.stiffness(i), paper.stiffness(i), 1e-10 * et);
+    EXPECT_NEAR(s.rest_length(i), paper.rest_length(i), 1e-12);
+  }
+  std::cout << "[square] stiffness-fit k / (t E) = " << s.stiffness(0) / et << ", l0 / l = " << s.rest_length(0) / 0.01
+            << " (Eq. 10-11: 5/16, 6/5)\n";
+  EXPECT_LT(MatX(linearised_stiffness(m, s) - fem_stiffness(m, mat)).norm(), 1e-10 * et);
+}
+
+// Away from the derivation's assumptions (distorted quads, nu = 0.2) the fit is still at rest in the rest shape
+// and closer to the assembled Q4 matrix than Eq. 10-11.
+TEST(StiffnessFit, DistortedQuadsRestInTheirRestShapeAndBeatEquation10) {
+  mesh::Mesh m = mesh::rectangle_quads(0.04, 0.03, 4, 3);
+  for (int i = 0; i < m.node_count(); ++i) {
+    m.nodes(i, 0) += 0.0015 * std::sin(7.0 * i);
+    m.nodes(i, 1) += 0.0012 * std::cos(5.0 * i);
+  }
+  const Material mat{Law::kLinear, 14630.0, 0.2, Plane::kStress, 0.001};
+  const SpringModel s = stiffness_fit(m, {mat}), paper = calibrate(m, {mat}, Method::kLloydSquare);
+  const auto model = make_model(m, s);
+  EXPECT_LT(model->gradient(model->rest_positions()).norm(), 1e-12 * 14630.0 * 0.001 * 0.01);
+  EXPECT_TRUE((s.stiffness.array() > 0.0).all());
+  const MatX k_fem = fem_stiffness(m, mat);
+  const double fit = MatX(linearised_stiffness(m, s) - k_fem).norm(),
+               eq10 = MatX(linearised_stiffness(m, paper) - k_fem).norm();
+  std::cout << "[distorted quads] ||K_fit - K_Q4|| / ||K_Q4|| = " << fit / k_fem.norm()
+            << ", Eq. 10-11: " << eq10 / k_fem.norm() << "\n";
+  EXPECT_LT(fit, eq10);
+}
+
 TEST(StiffnessFit, RecoversEquation8ExactlyOnTheEquilateralTriangle) {
   const mesh::Mesh m = mesh::equilateral_membrane(2, 2, 0.01);
   ASSERT_EQ(m.element_count(), 1);

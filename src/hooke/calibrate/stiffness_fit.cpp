@@ -1,3 +1,5 @@
+#include <Eigen/LU>
+#include <array>
 #include <hooke/calibrate/detail/element_springs.hpp>
 #include <hooke/calibrate/stiffness_fit.hpp>
 #include <hooke/core/error.hpp>
@@ -33,6 +35,37 @@ MatX unit_volume(const MatX& p) {
       6.0;
   const Eigen::Map<const Eigen::Matrix<double, 12, 1>> g(grad.data());
   return g * g.transpose() / (v0 * v0);
+}
+
+// Hessian at rest of a spring whose prestress coefficient is a = 1 (tension 1 N/m times its length) and whose
+// axial coefficient is zero: the isotropic part a I of k[(1 - l0/l) I + (l0/l) u u^T].
+MatX unit_prestress(int d, int n, int a, int b) {
+  MatX h = MatX::Zero(d * n, d * n);
+  const MatX i = MatX::Identity(d, d);
+  h.block(d * a, d * a, d, d) = i;
+  h.block(d * b, d * b, d, d) = i;
+  h.block(d * a, d * b, d, d) = -i;
+  h.block(d * b, d * a, d, d) = -i;
+  return h;
+}
+
+// Self-stress states of an element's springs: prestress coefficients a_s (tension / length) whose nodal forces
+// sum to zero at every node, so that the element rests in its rest shape. One state for a quad with its two
+// diagonals (6 bars on 4 nodes in 2D: 6 - (8 - 3) = 1).
+MatX self_stress(const MatX& p, const std::vector<std::array<int, 2>>& pairs) {
+  const int d = static_cast<int>(p.cols()), n = static_cast<int>(p.rows());
+  MatX eq = MatX::Zero(d * n, static_cast<Eigen::Index>(pairs.size()));
+  for (size_t s = 0; s < pairs.size(); ++s) {
+    const VecX dp = (p.row(pairs[s][0]) - p.row(pairs[s][1])).transpose();
+    eq.block(d * pairs[s][0], static_cast<Eigen::Index>(s), d, 1) = dp;
+    eq.block(d * pairs[s][1], static_cast<Eigen::Index>(s), d, 1) = -dp;
+  }
+  Eigen::FullPivLU<MatX> lu(eq);
+  lu.setThreshold(1e-10);
+  MatX kernel = lu.kernel();
+  if (lu.rank() == eq.cols()) return MatX(eq.cols(), 0);
+  for (Eigen::Index c = 0; c < kernel.cols(); ++c) kernel.col(c).normalize();
+  return kernel;
 }
 
 }  // namespace
@@ -97,10 +130,29 @@ SpringModel stiffness_fit(const mesh::Mesh& m, const std::vector<material::Mater
     std::vector<MatX> bases;
     for (const auto& lp : acc.local_pairs()) bases.push_back(unit_spring(p, lp[0], lp[1]));
     if (options.volume_terms) bases.push_back(unit_volume(p));
+    // Quads: the prestrain of Eq. 11 as well. Its isotropic stiffness part a_s I must be a self-stress of the
+    // element (else the rest shape is not an equilibrium), a_s = alpha * state_s with alpha of either sign:
+    // two non-negative bases, +state and -state.
+    const MatX states = m.kind == ElementKind::kQuad ? self_stress(p, acc.local_pairs()) : MatX();
+    const size_t first_state = bases.size();
+    for (Eigen::Index st = 0; st < states.cols(); ++st) {
+      MatX iso = MatX::Zero(k_fem.rows(), k_fem.cols());
+      for (size_t s = 0; s < acc.local_pairs().size(); ++s)
+        iso += states(static_cast<Eigen::Index>(s), st) *
+               unit_prestress(d, npe, acc.local_pairs()[s][0], acc.local_pairs()[s][1]);
+      bases.push_back(iso);
+      bases.push_back(-iso);
+    }
     const VecX c = fit_nonnegative(k_fem, bases);
     const std::vector<int> springs = acc.element_springs(e);
     for (size_t s = 0; s < springs.size(); ++s) acc.add(springs[s], c(static_cast<Eigen::Index>(s)));
     if (options.volume_terms) k_volume(e) = c(static_cast<Eigen::Index>(springs.size()));
+    for (Eigen::Index st = 0; st < states.cols(); ++st) {
+      const double alpha =
+          c(static_cast<Eigen::Index>(first_state) + 2 * st) - c(static_cast<Eigen::Index>(first_state) + 2 * st + 1);
+      for (size_t s = 0; s < springs.size(); ++s)
+        acc.add_prestress(springs[s], alpha * states(static_cast<Eigen::Index>(s), st));
+    }
   }
   SpringModel out = acc.finish();
   if (options.volume_terms) {

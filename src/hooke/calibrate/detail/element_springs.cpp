@@ -1,4 +1,6 @@
 #include <hooke/calibrate/detail/element_springs.hpp>
+#include <hooke/core/error.hpp>
+#include <string>
 
 namespace hooke::calibrate::detail {
 
@@ -23,6 +25,7 @@ EdgeAccumulator::EdgeAccumulator(const mesh::Mesh& mesh) : m_mesh(mesh) {
   for (size_t s = 0; s < m_pairs.size(); ++s)
     m_length(static_cast<Eigen::Index>(s)) = (mesh.nodes.row(m_pairs[s][0]) - mesh.nodes.row(m_pairs[s][1])).norm();
   m_stiffness = VecX::Zero(m_length.size());
+  m_prestress = VecX::Zero(m_length.size());
 }
 
 std::vector<int> EdgeAccumulator::element_springs(int e) const {
@@ -39,8 +42,16 @@ SpringModel EdgeAccumulator::finish() const {
   SpringModel s;
   s.dim = m_mesh.dim();
   s.pairs = m_pairs;
-  s.stiffness = m_stiffness;
+  s.stiffness = m_stiffness + m_prestress;
   s.rest_length = m_length;
+  for (Eigen::Index i = 0; i < s.stiffness.size(); ++i) {
+    if (m_prestress(i) == 0.0) continue;
+    if (!(s.stiffness(i) > 0.0))
+      throw InvalidArgument("calibration gives spring " + std::to_string(m_pairs[static_cast<size_t>(i)][0]) + "-" +
+                            std::to_string(m_pairs[static_cast<size_t>(i)][1]) +
+                            " a non-positive stiffness with its prestress (element too distorted)");
+    s.rest_length(i) = m_length(i) * m_stiffness(i) / s.stiffness(i);
+  }
   return s;
 }
 

@@ -17,6 +17,10 @@ class EdgeAccumulator {
   // Local node pairs of an element's springs, in the order of element_springs().
   const std::vector<std::array<int, 2>>& local_pairs() const { return m_local; }
   void add(int spring, double stiffness) { m_stiffness(spring) += stiffness; }
+  // Adds a prestress coefficient a = k (1 - l0/l) (N/m) to a spring: with it, the spring's linearised
+  // stiffness is a I + b u u^T where b is what add() accumulated; finish() turns (a, b) into k = a + b and
+  // l0 = l b / k (Lloyd Eq. 11 generalised). Only meaningful when the a of each element is a self-stress.
+  void add_prestress(int spring, double a) { m_prestress(spring) += a; }
   bool is_diagonal(int spring) const { return m_diagonal[static_cast<size_t>(spring)] != 0; }
   SpringModel finish() const;
 
@@ -25,7 +29,7 @@ class EdgeAccumulator {
   std::map<std::array<int, 2>, int> m_index;
   std::vector<std::array<int, 2>> m_pairs, m_local;
   std::vector<char> m_diagonal;
-  VecX m_length, m_stiffness;
+  VecX m_length, m_stiffness, m_prestress;
 };
 
 }  // namespace hooke::calibrate::detail
