@@ -21,6 +21,15 @@ TEST(SparseCholesky, CholmodAndEigenAgree) {
   EXPECT_EQ(e.backend_name(), "eigen-ldlt");
 }
 
+// kAuto: Eigen's LDL^T for small systems, CHOLMOD from 1 000 unknowns on.
+TEST(SparseCholesky, AutoPicksTheBackendBySize) {
+  SparseCholesky small, large;
+  ASSERT_TRUE(small.factorize(test::shifted_laplacian(500, 0.01)));
+  ASSERT_TRUE(large.factorize(test::shifted_laplacian(2000, 0.01)));
+  EXPECT_EQ(small.backend_name(), "eigen-ldlt");
+  EXPECT_EQ(large.backend_name(), "cholmod");
+}
+
 TEST(SparseCholesky, ReportsIndefiniteMatrices) {
   const SparseMatrix a = test::shifted_laplacian(200, -0.5);  // eigenvalues 1.5 - 2 cos(...) include negatives
   for (CholeskyBackend b : {CholeskyBackend::kCholmod, CholeskyBackend::kEigen}) {

@@ -5,8 +5,14 @@
 
 namespace hooke::solve {
 
+// Below this many unknowns kAuto uses Eigen's simplicial LDL^T: there CHOLMOD's supernodal path hands tiny
+// dense blocks to a threaded BLAS whose threads spend their time waking and yielding. Measured on
+// `hooke reproduce lloyd2007` (2 cores): CHOLMOD always 72 s wall; threshold 1 000: 66 s; threshold 5 000:
+// 115 s (simplicial fill on the 3 000-DOF tet meshes costs more than the threads do).
+constexpr Eigen::Index kSmallSystem = 1000;
+
 struct SparseCholesky::Impl {
-  CholeskyBackend backend;
+  CholeskyBackend requested, backend;
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholmod;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
   Eigen::Index rows = -1, nonzeros = -1;
@@ -14,6 +20,7 @@ struct SparseCholesky::Impl {
 };
 
 SparseCholesky::SparseCholesky(CholeskyBackend backend) : m_impl(std::make_unique<Impl>()) {
+  m_impl->requested = backend;
   m_impl->backend = backend == CholeskyBackend::kAuto ? CholeskyBackend::kCholmod : backend;
   // CHOLMOD reports a non-positive-definite matrix through its status; keep it from printing.
   m_impl->cholmod.cholmod().print = 0;
@@ -26,6 +33,8 @@ SparseCholesky& SparseCholesky::operator=(SparseCholesky&&) noexcept = default;
 bool SparseCholesky::factorize(const SparseMatrix& a) {
   Impl& s = *m_impl;
   const bool same_pattern = s.analyzed && a.rows() == s.rows && a.nonZeros() == s.nonzeros;
+  if (!same_pattern && s.requested == CholeskyBackend::kAuto)
+    s.backend = a.rows() < kSmallSystem ? CholeskyBackend::kEigen : CholeskyBackend::kCholmod;
   if (s.backend == CholeskyBackend::kCholmod) {
     if (!same_pattern) s.cholmod.analyzePattern(a);
     s.cholmod.factorize(a);
