@@ -41,6 +41,26 @@ TEST(Calibrate, MethodNamesRoundTrip) {
                InvalidArgument);
 }
 
+// Each method says where it leaves its derivation's assumptions (shape, nu) and is silent where it is exact.
+TEST(Calibrate, ValidityWarningsNameTheAssumptionAndTheElement) {
+  const Material third{Law::kLinear, 14630.0, 1.0 / 3.0, Plane::kStress, 0.001};
+  Material quarter = third;
+  quarter.poisson_ratio = 0.25;
+  EXPECT_TRUE(validity_warnings(mesh::equilateral_membrane(7, 6, 0.01), {third}, Method::kLloydEquilateral).empty());
+  EXPECT_TRUE(validity_warnings(mesh::rectangle_quads(0.05, 0.05, 5, 5), {third}, Method::kLloydSquare).empty());
+  EXPECT_TRUE(validity_warnings(regular_tet(0.01), {quarter}, Method::kLloydTet).empty());
+  const auto nu = validity_warnings(mesh::equilateral_membrane(7, 6, 0.01), {quarter}, Method::kLloydEquilateral);
+  ASSERT_EQ(nu.size(), 1u);
+  EXPECT_NE(nu[0].find("nu = 1/3"), std::string::npos) << nu[0];
+  const auto shape = validity_warnings(mesh::rectangle_quads(0.05, 0.03, 5, 5), {third}, Method::kLloydSquare);
+  ASSERT_EQ(shape.size(), 1u);
+  EXPECT_NE(shape[0].find("squares only; quad"), std::string::npos) << shape[0];
+  const auto tri = validity_warnings(mesh::rectangle_triangles(0.05, 0.05, 5, 5), {third}, Method::kLloydEquilateral);
+  ASSERT_EQ(tri.size(), 1u);
+  EXPECT_NE(tri[0].find("triangle "), std::string::npos) << tri[0];
+  EXPECT_EQ(validity_warnings(regular_tet(0.01), {third}, Method::kLloydTetVolume).size(), 1u);
+}
+
 // Lloyd Sec. 3.3 and Eq. 8 on a whole membrane: the assembled spring stiffness equals the assembled CST
 // stiffness at nu = 1/3 (interior springs sum two triangles, boundary springs one).
 TEST(LloydEquilateral, MembraneSpringsEqualAssembledCstAtNuOneThird) {

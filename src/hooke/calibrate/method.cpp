@@ -1,8 +1,10 @@
 #include <cmath>
+#include <cstdio>
 #include <hooke/calibrate/detail/element_springs.hpp>
 #include <hooke/calibrate/method.hpp>
 #include <hooke/calibrate/stiffness_fit.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/core/log.hpp>
 #include <hooke/mesh/measure.hpp>
 
 namespace hooke::calibrate {
@@ -27,7 +29,74 @@ void require_kind(const mesh::Mesh& m, bool ok, Method method, const char* what)
 // Equivalent edge length of a tet from its volume (Eq. 13): V = l^3 sqrt(2)/12.
 double equivalent_edge(double volume) { return std::cbrt(volume * 12.0 / std::sqrt(2.0)); }
 
+std::string format_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+// Largest relative deviation of element e's edges (quads: sides, and the two diagonals from each other and
+// from sqrt(2) times the side) from the regular shape's.
+double irregularity(const mesh::Mesh& m, int e) {
+  auto len = [&](int a, int b) { return (m.nodes.row(m.elements(e, a)) - m.nodes.row(m.elements(e, b))).norm(); };
+  const int n = static_cast<int>(m.elements.cols());
+  if (m.kind == mesh::ElementKind::kQuad) {
+    const double side = 0.25 * (len(0, 1) + len(1, 2) + len(2, 3) + len(3, 0));
+    double worst = 0.0;
+    for (int a = 0; a < 4; ++a) worst = std::max(worst, std::abs(len(a, (a + 1) % 4) / side - 1.0));
+    for (const auto& d : {len(0, 2), len(1, 3)}) worst = std::max(worst, std::abs(d / (std::sqrt(2.0) * side) - 1.0));
+    return worst;
+  }
+  double lo = 1e300, hi = 0.0;
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) {
+      lo = std::min(lo, len(a, b));
+      hi = std::max(hi, len(a, b));
+    }
+  return hi / lo - 1.0;
+}
+
 }  // namespace
+
+std::vector<std::string> validity_warnings(const mesh::Mesh& m, const std::vector<material::Material>& materials,
+                                           Method method) {
+  std::vector<std::string> out;
+  const std::string name(method_name(method));
+  double exact_nu = -1.0;
+  std::string eq;
+  switch (method) {
+    case Method::kLloydEquilateral: exact_nu = 1.0 / 3.0, eq = "Eq. 8"; break;
+    case Method::kLloydTriangle: exact_nu = 1.0 / 3.0, eq = "Eq. 9"; break;
+    case Method::kLloydSquare: exact_nu = 1.0 / 3.0, eq = "Eq. 10-11"; break;
+    case Method::kLloydTet: exact_nu = 0.25, eq = "Eq. 12"; break;
+    case Method::kLloydTetVolume: exact_nu = 0.25, eq = "Eq. 14"; break;
+    default: return out;
+  }
+  const bool kind_ok = method == Method::kLloydSquare ? m.kind == mesh::ElementKind::kQuad
+                       : exact_nu < 0.3               ? m.kind == mesh::ElementKind::kTet
+                                                      : m.kind == mesh::ElementKind::kTriangle;
+  if (!kind_ok) return out;  // calibrate() rejects the combination
+  for (const auto& mat : materials)
+    if (std::abs(mat.poisson_ratio - exact_nu) > 1e-9) {
+      out.push_back(name + " (" + eq + ") is derived for nu = " + (exact_nu < 0.3 ? "1/4" : "1/3") + ", not " +
+                    format_number(mat.poisson_ratio) +
+                    ": the springs ignore nu and behave like that value (stiffness-fit gives the best fit at nu)");
+      break;
+    }
+  if (method == Method::kLloydEquilateral || method == Method::kLloydSquare) {
+    int worst = -1;
+    double dev = 0.01;
+    for (int e = 0; e < m.element_count(); ++e)
+      if (const double d = irregularity(m, e); d > dev) dev = d, worst = e;
+    if (worst >= 0)
+      out.push_back(name + " (" + eq + ") is exact for " +
+                    (method == Method::kLloydSquare ? "squares" : "equilateral triangles") + " only; " +
+                    mesh::element_label(m, worst) + " deviates by " + std::to_string(static_cast<int>(100.0 * dev)) +
+                    " % (use " +
+                    (method == Method::kLloydSquare ? "stiffness-fit" : "lloyd-triangle or stiffness-fit") + ")");
+  }
+  return out;
+}
 
 Method method_from_name(std::string_view name) {
   for (const auto& n : kNames)
@@ -55,6 +124,8 @@ SpringModel calibrate(const mesh::Mesh& m, const std::vector<material::Material>
              tet = m.kind == ElementKind::kTet;
   if (method == Method::kStiffnessFit) return stiffness_fit(m, materials);
   if (method == Method::kStiffnessFitVolume) return stiffness_fit(m, materials, {.volume_terms = true});
+  if (m.kind == mesh::ElementKind::kTriangle || m.kind == mesh::ElementKind::kQuad || m.kind == mesh::ElementKind::kTet)
+    for (const auto& w : validity_warnings(m, materials, method)) log_warning(w);
   detail::EdgeAccumulator acc(m);
   SpringModel out;
   switch (method) {

@@ -3,6 +3,7 @@
 /// by the library, the CLI and reports; docs/methods/ describes each with its equation and validity.
 #include <hooke/calibrate/spring_model.hpp>
 #include <hooke/material/material.hpp>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -22,8 +23,16 @@ enum class Method {
 Method method_from_name(std::string_view name);  ///< @throws InvalidArgument listing the names
 std::string_view method_name(Method method);
 
+/// Where `method` leaves the assumptions of its derivation on this mesh and material, one sentence each
+/// (empty when it is applied where it is exact): lloyd-equilateral needs equilateral triangles and nu = 1/3
+/// (Eq. 8), lloyd-triangle nu = 1/3 (Eq. 9 is an approximation on other shapes), lloyd-square squares and
+/// nu = 1/3 (Eq. 10-11), lloyd-tet and lloyd-tet-volume nu = 1/4 (Eq. 12, 14). Shapes count as regular within 1 %.
+std::vector<std::string> validity_warnings(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
+                                           Method method);
+
 /// Calibrates a mass-spring model on `mesh` (springs on the element edges; also the diagonals of quads).
 /// @param materials  one material, or one per element (E in Pa, nu, thickness t in m for 2D)
+/// Logs each of validity_warnings() as a warning.
 /// @throws InvalidArgument when the method does not apply to the mesh's element kind
 SpringModel calibrate(const mesh::Mesh& mesh, const std::vector<material::Material>& materials, Method method);
 

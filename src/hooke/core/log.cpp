@@ -24,9 +24,11 @@ std::mutex& sink_mutex() {
 
 }  // namespace
 
-void set_log_sink(LogSink new_sink) {
+LogSink set_log_sink(LogSink new_sink) {
   std::lock_guard lock(sink_mutex());
+  LogSink old = std::move(sink());
   sink() = std::move(new_sink);
+  return old;
 }
 
 void log(LogLevel level, std::string_view message) {

@@ -10,9 +10,9 @@ enum class LogLevel { kDebug, kInfo, kWarning, kError };
 /// Receives every message the library emits.
 using LogSink = std::function<void(LogLevel level, std::string_view message)>;
 
-/// Replaces the sink; an empty function silences the library. The default writes warnings and
-/// errors to stderr. Not thread-safe against concurrent logging: set it once at start-up.
-void set_log_sink(LogSink sink);
+/// Replaces the sink and returns the previous one (to restore it); an empty function silences the library.
+/// The default writes warnings and errors to stderr.
+LogSink set_log_sink(LogSink sink);
 
 /// Sends one message to the current sink.
 void log(LogLevel level, std::string_view message);
