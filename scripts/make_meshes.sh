@@ -10,6 +10,7 @@ g -3 -format msh41 data/meshes/cylinder.geo -o data/meshes/cylinder.msh
 g -3 -format msh41 data/meshes/cylinder_hole.geo -o data/meshes/cylinder_hole.msh
 g -3 -format msh41 data/meshes/cone.geo -o data/meshes/cone.msh
 g -2 -format msh41 data/meshes/sphere.geo -o data/meshes/sphere_surface.msh
+g -2 -format msh41 data/meshes/rectangle_tri.geo -o data/meshes/rectangle_tri.msh
 
 # Reader tests: the same small meshes in every Gmsh flavour, TetGen output, and meshio conversions.
 d=tests/data

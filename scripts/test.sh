@@ -15,5 +15,5 @@ ctest --preset ci -j "$jobs"
 if [ "${1:-}" != "--no-sanitizers" ]; then
   cmake --preset asan > /dev/null
   cmake --build --preset asan -j "$jobs"
-  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs" -E cli_smoke
+  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs" -E "cli_smoke|reproduce_lloyd2007"
 fi

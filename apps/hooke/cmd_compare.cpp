@@ -6,12 +6,14 @@
 #include <hooke/core/error.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/experiments/compare.hpp>
+#include <hooke/experiments/figure.hpp>
 #include <hooke/io/mesh_io.hpp>
 #include <hooke/io/vtu.hpp>
 #include <memory>
 #include <string>
 
 #include "commands.hpp"
+#include "plot.hpp"
 
 namespace hooke::cli {
 namespace {
@@ -19,6 +21,7 @@ namespace {
 struct CompareCli {
   std::string mesh_path, method = "lloyd-tet", load = "stretch", reference = "linear", unit = "m", out_dir,
                          plane = "stress";
+  bool no_figure = false;
   double young = 0.0, poisson = 0.0, thickness = 1e-3, traction = std::nan(""), strain = std::nan("");
 };
 
@@ -59,6 +62,17 @@ int run_compare(const CompareCli& o) {
                    {"spring_displacement", m.dim(), c.spring_positions - rest},
                    {"node_error", 1, c.node_error}});
     std::printf("  wrote     %s\n", path.c_str());
+    char title[160];
+    std::snprintf(title, sizeof title, "%s, %s vs %s FEM\nmax %.3g cm, mean %.3g cm", o.load.c_str(), o.method.c_str(),
+                  o.reference.c_str(), 100.0 * c.max_error, 100.0 * c.mean_error);
+    experiments::Figure fig{"compare",
+                            std::filesystem::path(o.mesh_path).filename().string() + " (MSM red, FEM black)",
+                            {experiments::deformation_panel(title, m, c.fem_positions, m, c.spring_positions)}};
+    experiments::write_figure_spec(o.out_dir, fig);
+    if (!o.no_figure) {
+      plot_figures({std::filesystem::path(o.out_dir) / "compare.json"});
+      std::printf("  wrote     %s\n", (std::filesystem::path(o.out_dir) / "compare.png").string().c_str());
+    }
   }
   return 0;
 }
@@ -82,7 +96,9 @@ Action add_compare_command(CLI::App& app) {
   cmd->add_option("--unit", o->unit, "Length unit of the mesh file and of the printed errors")->capture_default_str();
   cmd->add_option("--thickness", o->thickness, "Plate thickness for 2D meshes, m")->capture_default_str();
   cmd->add_option("--plane", o->plane, "2D model: stress or strain")->capture_default_str();
-  cmd->add_option("-o,--output", o->out_dir, "Folder for compare.vtu (both displacement fields and the node error)");
+  cmd->add_option("-o,--output", o->out_dir,
+                  "Folder for compare.vtu (both displacement fields and the node error) and compare.png");
+  cmd->add_flag("--no-figure", o->no_figure, "Write the figure spec compare.json but do not run matplotlib");
   return [o] { return run_compare(*o); };
 }
 

@@ -38,7 +38,7 @@ int run_fem(const FemOptions& o) {
   const experiments::LoadKind kind = experiments::load_kind_from_name(o.load);
   if (std::isnan(o.traction) == std::isnan(o.strain))
     throw InvalidArgument("give exactly one of --traction and --strain");
-  const double traction = std::isnan(o.strain) ? o.traction : experiments::traction_for_strain(m, mat, kind, o.strain);
+  const double traction = std::isnan(o.strain) ? o.traction : experiments::traction_for_strain(m, {mat}, kind, o.strain);
 
   auto model = std::make_shared<model::Model>(m.dim(), Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size()));
   model->add(fem::make_elastic_block(m, mat));

@@ -28,3 +28,22 @@ execute_process(COMMAND ${HOOKE} fem ${MESHES}/cylinder.msh --young 14630 --pois
 if(NOT rc EQUAL 2 OR NOT err MATCHES "Poisson" OR EXISTS ${OUT}/bad.vtu)
   message(FATAL_ERROR "nu = 0.5 must fail with exit code 2 and write nothing (got ${rc}: ${err})")
 endif()
+
+# hooke compare writes the VTU and the paper-style PNG (matplotlib through scripts/plot_figures.py).
+execute_process(COMMAND ${HOOKE} compare ${MESHES}/cylinder.msh --young 14630 --poisson 0.25 --method lloyd-tet
+                        --load shear --strain 0.12 -o ${OUT}/compare
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0 OR NOT EXISTS ${OUT}/compare/compare.vtu OR NOT EXISTS ${OUT}/compare/compare.png)
+  message(FATAL_ERROR "hooke compare did not write compare.vtu and compare.png (${rc})")
+endif()
+file(READ ${OUT}/compare/compare.png png LIMIT 8 HEX)
+if(NOT png STREQUAL "89504e470d0a1a0a")
+  message(FATAL_ERROR "compare.png is not a PNG file")
+endif()
+# A malformed figure spec fails the plot script with exit code 2 and leaves no PNG.
+file(WRITE ${OUT}/bad.json "{\"panels\": [{\"type\": \"pie\"}]}")
+execute_process(COMMAND /usr/bin/python3 ${SCRIPTS}/plot_figures.py ${OUT}/bad.json RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR EXISTS ${OUT}/bad.png)
+  message(FATAL_ERROR "a bad figure spec must fail with exit code 2 and write nothing (got ${rc}: ${err})")
+endif()

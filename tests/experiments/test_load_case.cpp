@@ -37,7 +37,7 @@ TEST(LoadCase, PlanarTractionUsesThickness) {
 TEST(LoadCase, TractionForStrainGivesTheRequestedMeanDisplacement) {
   const mesh::Mesh cyl = io::read_mesh(HOOKE_MESH_DATA "/cylinder.msh");
   const material::Material mat{material::Law::kLinear, 14630.0, 0.3};
-  const double t = traction_for_strain(cyl, mat, LoadKind::kStretch, 0.12);
+  const double t = traction_for_strain(cyl, {mat}, LoadKind::kStretch, 0.12);
   auto model = std::make_shared<model::Model>(3, test::flat_positions(cyl));
   model->add(fem::make_elastic_block(cyl, mat));
   model::Problem p = model::make_problem(model);

@@ -1,42 +1,84 @@
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/compare.hpp>
 #include <hooke/fem/elastic_block.hpp>
+#include <hooke/mesh/interpolate.hpp>
 
 namespace hooke::experiments {
+namespace {
 
-Comparison compare(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
-                   const CompareOptions& options) {
+VecX rest_of(const mesh::Mesh& m) { return Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size()); }
+
+// The FEM reference under `load` (linear: one linear solve; otherwise Newton with the stability check).
+solve::StaticResult solve_fem(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
+                              material::Law law, const LoadCase& load) {
   std::vector<material::Material> reference = materials;
-  for (auto& m : reference) m.law = options.reference;
-  const double thickness = materials.at(0).thickness;
-  const double traction = options.strain > 0.0 ? traction_for_strain(mesh, materials[0], options.load, options.strain)
-                                               : options.traction_pa;
-  Comparison c;
-  c.load = make_load_case(mesh, options.load, traction, thickness);
+  for (auto& m : reference) m.law = law;
+  auto model = std::make_shared<model::Model>(mesh.dim(), rest_of(mesh));
+  model->add(std::make_unique<fem::ElasticBlock>(mesh, reference));
+  model::Problem problem = model::make_problem(model);
+  apply(load, problem);
+  return law == material::Law::kLinear ? solve::linear_static(problem) : solve::static_equilibrium(problem);
+}
 
-  auto fem_model =
-      std::make_shared<model::Model>(mesh.dim(), Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size()));
-  fem_model->add(std::make_unique<fem::ElasticBlock>(mesh, reference));
-  model::Problem fem_problem = model::make_problem(fem_model);
-  apply(c.load, fem_problem);
-  const solve::StaticResult fem = options.reference == material::Law::kLinear ? solve::linear_static(fem_problem)
-                                                                              : solve::static_equilibrium(fem_problem);
+solve::StaticResult solve_springs(const mesh::Mesh& mesh, const calibrate::SpringModel& springs, const LoadCase& load) {
+  model::Problem problem = model::make_problem(calibrate::make_model(mesh, springs));
+  apply(load, problem);
+  return solve::static_equilibrium(problem);
+}
 
-  c.springs = calibrate::calibrate(mesh, materials, options.method);
-  model::Problem spring_problem = model::make_problem(calibrate::make_model(mesh, c.springs));
-  apply(c.load, spring_problem);
-  const solve::StaticResult springs = solve::static_equilibrium(spring_problem);
-
-  c.fem_positions = fem.positions;
-  c.spring_positions = springs.positions;
-  c.fem_report = fem.report;
-  c.spring_report = springs.report;
-  const int d = mesh.dim();
-  c.node_error.resize(mesh.node_count());
-  for (int i = 0; i < mesh.node_count(); ++i)
+void measure(Comparison& c, int d) {
+  const Eigen::Index n = c.spring_positions.size() / d;
+  c.node_error.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i)
     c.node_error(i) = (c.spring_positions.segment(d * i, d) - c.fem_positions.segment(d * i, d)).norm();
   c.max_error = c.node_error.maxCoeff();
   c.mean_error = c.node_error.mean();
+}
+
+double traction_of(const mesh::Mesh& mesh, const std::vector<material::Material>& materials, const CompareOptions& o) {
+  return o.strain > 0.0 ? traction_for_strain(mesh, materials, o.load, o.strain) : o.traction_pa;
+}
+
+}  // namespace
+
+Comparison compare_model(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
+                         const calibrate::SpringModel& springs, const CompareOptions& options) {
+  Comparison c;
+  c.load = make_load_case(mesh, options.load, traction_of(mesh, materials, options), materials[0].thickness);
+  const solve::StaticResult fem = solve_fem(mesh, materials, options.reference, c.load);
+  const solve::StaticResult msm = solve_springs(mesh, springs, c.load);
+  c.springs = springs;
+  c.fem_positions = fem.positions;
+  c.fem_mesh_positions = fem.positions;
+  c.spring_positions = msm.positions;
+  c.fem_report = fem.report;
+  c.spring_report = msm.report;
+  measure(c, mesh.dim());
+  return c;
+}
+
+Comparison compare(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
+                   const CompareOptions& options) {
+  return compare_model(mesh, materials, calibrate::calibrate(mesh, materials, options.method), options);
+}
+
+Comparison compare_across(const mesh::Mesh& coarse, const mesh::Mesh& fine, const material::Material& material,
+                          const CompareOptions& options) {
+  const double traction = traction_of(fine, {material}, options);
+  Comparison c;
+  c.load = make_load_case(coarse, options.load, traction, material.thickness);
+  const LoadCase fine_load = make_load_case(fine, options.load, traction, material.thickness);
+  const solve::StaticResult fem = solve_fem(fine, {material}, options.reference, fine_load);
+  c.springs = calibrate::calibrate(coarse, {material}, options.method);
+  const solve::StaticResult msm = solve_springs(coarse, c.springs, c.load);
+  const int d = coarse.dim();
+  c.fem_mesh_positions = fem.positions;
+  const RowMatX at_coarse = mesh::interpolate_nodal(fine, mesh::positions_as_rows(fem.positions, d), coarse.nodes);
+  c.fem_positions = Eigen::Map<const VecX>(at_coarse.data(), at_coarse.size());
+  c.spring_positions = msm.positions;
+  c.fem_report = fem.report;
+  c.spring_report = msm.report;
+  measure(c, d);
   return c;
 }
 

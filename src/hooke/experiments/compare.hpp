@@ -15,8 +15,9 @@ struct CompareOptions {
 };
 
 struct Comparison {
-  LoadCase load;            ///< the boundary conditions both models saw
-  VecX fem_positions;       ///< FEM equilibrium, flat, m
+  LoadCase load;            ///< the boundary conditions the spring model saw
+  VecX fem_positions;       ///< FEM equilibrium at the spring model's nodes, flat, m
+  VecX fem_mesh_positions;  ///< FEM equilibrium on the reference mesh's own nodes, flat, m
   VecX spring_positions;    ///< spring-model equilibrium, flat, m
   VecX node_error;          ///< |x_spring - x_fem| per node, m
   double max_error = 0.0;   ///< m
@@ -31,5 +32,17 @@ struct Comparison {
 /// @param materials  one material, or one per element (the law is taken from options.reference)
 Comparison compare(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
                    const CompareOptions& options);
+
+/// The same with a given spring model on `mesh` (a variant no method names); options.method is ignored.
+Comparison compare_model(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
+                         const calibrate::SpringModel& springs, const CompareOptions& options);
+
+/// A spring model on `coarse` against the FEM reference on `fine`, a finer mesh of the same object (Lloyd
+/// Sec. 5.4): both carry the same traction (from options.strain on the fine linear FEM, else
+/// options.traction_pa) on their own top boundaries; the FEM positions are interpolated at the coarse nodes.
+/// @param material  one homogeneous material (law taken from options.reference)
+/// @throws InvalidArgument if a coarse node lies outside the fine mesh
+Comparison compare_across(const mesh::Mesh& coarse, const mesh::Mesh& fine, const material::Material& material,
+                          const CompareOptions& options);
 
 }  // namespace hooke::experiments

@@ -81,15 +81,16 @@ double mean_top_displacement(const LoadCase& load, const model::Problem& problem
   return load.top_nodes.empty() ? 0.0 : sum / static_cast<double>(load.top_nodes.size());
 }
 
-double traction_for_strain(const mesh::Mesh& mesh, const material::Material& material, LoadKind kind, double strain) {
+double traction_for_strain(const mesh::Mesh& mesh, const std::vector<material::Material>& materials, LoadKind kind,
+                           double strain) {
   if (!(strain > 0.0) || !std::isfinite(strain)) throw InvalidArgument("the strain must be a positive number");
-  material::Material linear = material;
-  linear.law = material::Law::kLinear;
+  std::vector<material::Material> linear = materials;
+  for (auto& m : linear) m.law = material::Law::kLinear;
   const VecX rest = Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size());
   auto m = std::make_shared<model::Model>(mesh.dim(), rest);
-  m->add(fem::make_elastic_block(mesh, linear));
+  m->add(std::make_unique<fem::ElasticBlock>(mesh, linear));
   model::Problem problem = model::make_problem(m);
-  const LoadCase unit = make_load_case(mesh, kind, 1.0, material.thickness);
+  const LoadCase unit = make_load_case(mesh, kind, 1.0, materials.at(0).thickness);
   apply(unit, problem);
   const solve::StaticResult r = solve::linear_static(problem);
   solve::require_converged(r.report);

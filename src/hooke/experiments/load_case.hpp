@@ -46,8 +46,9 @@ double mean_top_displacement(const LoadCase& load, const model::Problem& problem
 
 /// The traction (Pa) at which the linear FEM's mean top displacement along the load equals
 /// strain x height (the papers' "~12 % stretch"). One linear solve with a unit traction, scaled.
-/// @param material  the material (its law is ignored: the linear FEM decides)
+/// @param materials  one material, or one per element (their law is ignored: the linear FEM decides)
 /// @pre strain > 0
-double traction_for_strain(const mesh::Mesh& mesh, const material::Material& material, LoadKind kind, double strain);
+double traction_for_strain(const mesh::Mesh& mesh, const std::vector<material::Material>& materials, LoadKind kind,
+                           double strain);
 
 }  // namespace hooke::experiments

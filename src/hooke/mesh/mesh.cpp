@@ -32,4 +32,8 @@ std::string element_label(const Mesh& mesh, int element) {
   return label;
 }
 
+RowMatX positions_as_rows(const VecX& flat, int dim) {
+  return Eigen::Map<const RowMatX>(flat.data(), flat.size() / dim, dim);
+}
+
 }  // namespace hooke::mesh

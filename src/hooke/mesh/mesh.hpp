@@ -42,4 +42,8 @@ Mesh make_mesh(ElementKind kind, RowMatX nodes, RowMatXi elements, std::string s
 /// "tet 412 of cylinder.msh": how messages name one element (0-based index in file order).
 std::string element_label(const Mesh& mesh, int element);
 
+/// Node positions stored flat (x0 y0 [z0] x1 ..., m) as #V x dim rows, the layout of Mesh::nodes.
+/// @pre flat.size() is a multiple of dim
+RowMatX positions_as_rows(const VecX& flat, int dim);
+
 }  // namespace hooke::mesh
