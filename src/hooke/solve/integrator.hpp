@@ -1,0 +1,35 @@
+#pragma once
+/// Time integrators of the Simulator, by stable name (shared by the library, the CLI and reports).
+#include <string_view>
+
+namespace hooke::solve {
+
+enum class Integrator {
+  kSymplecticEuler,  ///< "symplectic-euler": v += dt M^-1 f(x, v); x += dt v. First order, explicit; stable
+                     ///< for dt < 2 / omega_max (Simulator::stable_time_step); conserves energy up to a bounded
+                     ///< oscillation (symplectic).
+  kVelocityVerlet,   ///< "velocity-verlet": half kick, drift, half kick. Second order, explicit, same limit as
+                     ///< symplectic Euler, symplectic (bounded energy error).
+  kImplicitEuler,    ///< "implicit-euler": backward Euler, x_{n+1} minimises the incremental potential
+                     ///< |x - x_n - dt v_n|^2_M / (2 dt^2) + E(x) - f.x (+ damping), by Newton's method with line
+                     ///< search. First order; unconditionally stable; dissipates energy (numerical damping).
+  kLocalGlobal,      ///< "local-global": Liu, Bargteil, O'Brien, Kavan 2013, "Fast Simulation of Mass-Spring
+                     ///< Systems": the same incremental potential for spring-only models, solved by alternating
+                     ///< spring directions (local) and one prefactored linear solve (global). Stable for any dt;
+                     ///< a fixed iteration count trades accuracy for speed.
+  kQuasiStatic       ///< "quasi-static": each step relaxes to the static equilibrium under the current loads
+                     ///< (Newton from the previous state); velocities are zero.
+};
+
+Integrator integrator_from_name(std::string_view name);  ///< @throws InvalidArgument listing the names
+std::string_view integrator_name(Integrator integrator);
+
+/// Linear solver of the Newton steps of implicit-euler and quasi-static.
+enum class NewtonLinearSolver {
+  kCholesky,          ///< "cholesky": sparse Cholesky (CHOLMOD or Eigen), symbolic analysis reused across steps
+  kConjugateGradient  ///< "cg": Jacobi-preconditioned conjugate gradient, warm-started from the previous step
+};
+
+NewtonLinearSolver newton_linear_solver_from_name(std::string_view name);  ///< @throws InvalidArgument
+
+}  // namespace hooke::solve

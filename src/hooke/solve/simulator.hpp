@@ -1,0 +1,73 @@
+#pragma once
+/// Dynamics of any model: masses, gravity, Rayleigh damping, and a time integrator (DESIGN.md: one simulation
+/// core for every model; integrators see only the model's energy, forces and Hessian).
+#include <hooke/model/problem.hpp>
+#include <hooke/solve/integrator.hpp>
+#include <memory>
+
+namespace hooke::solve {
+
+/// What dynamics adds to a static problem.
+struct Dynamics {
+  VecX mass;                       ///< lumped mass per DOF, kg (size dof_count; > 0 on free DOFs)
+  VecX gravity;                    ///< acceleration of gravity, m/s^2 (size dim; empty = none)
+  double mass_damping = 0.0;       ///< Rayleigh alpha, 1/s: damping force -alpha M v
+  double stiffness_damping = 0.0;  ///< Rayleigh beta, s: damping force -beta K0 v, K0 = the Hessian at rest
+};
+
+struct SimulatorOptions {
+  Integrator integrator = Integrator::kImplicitEuler;
+  NewtonLinearSolver linear_solver = NewtonLinearSolver::kCholesky;
+  int max_newton_iterations = 30;    ///< implicit-euler, quasi-static: per step
+  double newton_tolerance = 1e-9;    ///< stop when |grad| <= tolerance x the step's force scale
+  int local_global_iterations = 10;  ///< local-global: iterations per step (Liu et al. use about 10)
+  bool project_psd = true;           ///< project element Hessians to PSD in Newton steps
+};
+
+/// What one step did.
+struct StepReport {
+  int iterations = 0;             ///< Newton or local/global iterations (0 for explicit steps)
+  double residual = 0.0;          ///< |gradient of the step's objective| on the free DOFs at the end, N (0 explicit)
+  bool converged = true;          ///< false when Newton hit max_newton_iterations above tolerance
+  bool beyond_stable_dt = false;  ///< explicit only: dt exceeded stable_time_step()
+};
+
+/// Steps a problem (model, fixed DOFs with their prescribed positions, dead external forces) in time.
+/// Fixed DOFs follow problem.prescribed_positions (change them between steps to drive nodes); their velocity
+/// is (new - old) / dt.
+class Simulator {
+ public:
+  /// @throws InvalidArgument on mismatched sizes, a non-positive mass on a free DOF, negative damping, or
+  ///   local-global with a model that has blocks other than springs (and the orientation guard)
+  Simulator(model::Problem problem, Dynamics dynamics, SimulatorOptions options = {});
+  ~Simulator();
+  Simulator(Simulator&&) noexcept;
+  Simulator& operator=(Simulator&&) noexcept;
+
+  /// Advances the state by dt seconds. @pre dt > 0
+  StepReport step(double dt);
+
+  double time() const;             ///< s
+  const VecX& positions() const;   ///< flat, m
+  const VecX& velocities() const;  ///< flat, m/s
+  void set_state(const VecX& positions, const VecX& velocities);
+
+  /// The problem being simulated: change external_force or prescribed_positions between steps.
+  model::Problem& problem();
+  const Dynamics& dynamics() const;
+
+  double kinetic_energy() const;  ///< 1/2 v^T M v, J
+  /// Elastic energy minus the work of the dead loads and gravity from the rest state, J.
+  double potential_energy() const;
+  /// Linear momentum sum M v per axis, kg m/s (size dim).
+  VecX momentum() const;
+  /// Explicit stability limit 2 / omega_max (s), omega_max^2 the largest eigenvalue of M^-1 K0 on the free DOFs
+  /// (power iteration); damping ignored.
+  double stable_time_step() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m;
+};
+
+}  // namespace hooke::solve

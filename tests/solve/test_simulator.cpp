@@ -1,0 +1,204 @@
+// Time integrators: convergence order on a harmonic oscillator, energy behaviour, momentum, rigid motions,
+// and agreement with the static solver.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <hooke/calibrate/method.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/fem/elastic_block.hpp>
+#include <hooke/mesh/generators.hpp>
+#include <hooke/model/mass.hpp>
+#include <hooke/solve/simulator.hpp>
+#include <hooke/solve/static_equilibrium.hpp>
+#include <hooke/springs/spring_block.hpp>
+#include <iostream>
+
+namespace hooke::solve {
+namespace {
+
+// One spring (k, l0 = 1 m) from a fixed node at the origin to a node of mass m on the x axis: along the axis
+// the force is exactly -k (x - 1), so x(t) = 1 + a cos(omega t), omega = sqrt(k / m).
+Simulator oscillator(Integrator integrator, double k, double mass, double amplitude) {
+  VecX rest(4);
+  rest << 0, 0, 1, 0;
+  auto model = std::make_shared<model::Model>(2, rest);
+  VecX kk(1), l0(1);
+  kk << k;
+  l0 << 1.0;
+  model->add(std::make_unique<springs::SpringBlock>(2, std::vector<std::array<int, 2>>{{0, 1}}, kk, l0));
+  model::Problem p = model::make_problem(model);
+  model::fix_nodes(p, {0});
+  SimulatorOptions o;
+  o.integrator = integrator;
+  o.local_global_iterations = 200;
+  o.newton_tolerance = 1e-13;
+  Simulator s(p, {VecX::Constant(4, mass), VecX(), 0.0, 0.0}, o);
+  VecX x = rest;
+  x(2) += amplitude;
+  s.set_state(x, VecX::Zero(4));
+  return s;
+}
+
+// State error |x - x_exact| + |v - v_exact| / omega at t = 0.3 s (not a multiple of the period, where
+// symmetric errors cancel and orders look higher than they are).
+double oscillator_error(Integrator integrator, int steps) {
+  const double omega = 2.0 * M_PI, k = omega * omega, m = 1.0, a = 0.1, t = 0.3;
+  Simulator s = oscillator(integrator, k, m, a);
+  for (int i = 0; i < steps; ++i) s.step(t / steps);
+  return std::abs(s.positions()(2) - (1.0 + a * std::cos(omega * t))) +
+         std::abs(s.velocities()(2) + a * omega * std::sin(omega * t)) / omega;
+}
+
+TEST(Simulator, ConvergenceOrderOnTheHarmonicOscillator) {
+  const struct {
+    Integrator integrator;
+    double order;
+  } cases[] = {{Integrator::kSymplecticEuler, 1.0},
+               {Integrator::kVelocityVerlet, 2.0},
+               {Integrator::kImplicitEuler, 1.0},
+               {Integrator::kLocalGlobal, 1.0}};
+  for (const auto& c : cases) {
+    const double e1 = oscillator_error(c.integrator, 200), e2 = oscillator_error(c.integrator, 400),
+                 e3 = oscillator_error(c.integrator, 800);
+    const double r1 = std::log2(e1 / e2), r2 = std::log2(e2 / e3);
+    std::cout << "[oscillator] " << integrator_name(c.integrator) << ": errors " << e1 << ", " << e2 << ", " << e3
+              << " m; observed orders " << r1 << ", " << r2 << "\n";
+    EXPECT_NEAR(r2, c.order, 0.15) << integrator_name(c.integrator);
+  }
+}
+
+TEST(Simulator, StableTimeStepOfTheOscillatorIsTwoOverOmega) {
+  Simulator s = oscillator(Integrator::kSymplecticEuler, 100.0, 4.0, 0.1);  // omega = 5
+  EXPECT_NEAR(s.stable_time_step(), 0.4, 1e-9);
+  EXPECT_FALSE(s.step(0.39).beyond_stable_dt);
+  EXPECT_TRUE(s.step(0.41).beyond_stable_dt);
+}
+
+// A spring model of a small box, clamped at z = 0, released from a stretched state.
+struct Box {
+  mesh::Mesh mesh = mesh::tet_box(0.02, 0.02, 0.04, 2, 2, 4);
+  std::shared_ptr<model::Model> model;
+  VecX mass;
+  Box() {
+    model = calibrate::make_model(
+        mesh, calibrate::calibrate(mesh, {{material::Law::kLinear, 14630.0, 0.25}}, calibrate::Method::kLloydTet));
+    mass = model::lumped_masses(mesh, 1000.0);
+  }
+  // The box with its bottom (z = 0) nodes fixed.
+  model::Problem clamped() const {
+    model::Problem p = model::make_problem(model);
+    std::vector<int> bottom;
+    for (int i = 0; i < mesh.node_count(); ++i)
+      if (mesh.nodes(i, 2) == 0.0) bottom.push_back(i);
+    model::fix_nodes(p, bottom);
+    return p;
+  }
+  VecX stretched() const {
+    VecX x = model->rest_positions();
+    for (int i = 0; i < mesh.node_count(); ++i) x(3 * i + 2) *= 1.05;
+    return x;
+  }
+};
+
+TEST(Simulator, SymplecticIntegratorsKeepEnergyBoundedImplicitEulerDissipatesIt) {
+  const Box box;
+  const model::Problem p = box.clamped();
+  for (Integrator integrator :
+       {Integrator::kSymplecticEuler, Integrator::kVelocityVerlet, Integrator::kImplicitEuler}) {
+    SimulatorOptions o;
+    o.integrator = integrator;
+    Simulator s(p, {box.mass, VecX(), 0.0, 0.0}, o);
+    s.set_state(box.stretched(), VecX::Zero(box.model->dof_count()));
+    const double dt = 0.2 * s.stable_time_step(), e0 = s.potential_energy() + s.kinetic_energy();
+    double worst = 0.0, previous = e0;
+    bool monotone = true;
+    for (int i = 0; i < 2000; ++i) {
+      s.step(dt);
+      const double e = s.potential_energy() + s.kinetic_energy();
+      worst = std::max(worst, std::abs(e - e0) / e0);
+      monotone = monotone && e <= previous * (1.0 + 1e-12);
+      previous = e;
+    }
+    std::cout << "[energy] " << integrator_name(integrator) << ": dt " << dt << " s, max |E - E0| / E0 = " << worst
+              << ", final E / E0 = " << previous / e0 << "\n";
+    if (integrator == Integrator::kImplicitEuler) {
+      EXPECT_TRUE(monotone);
+      EXPECT_LT(previous, 0.9 * e0);
+    } else {  // bounded oscillation of O(dt omega) (symplectic Euler) or O((dt omega)^2) (Verlet), no drift
+      EXPECT_LT(worst, integrator == Integrator::kVelocityVerlet ? 0.02 : 0.1);
+      EXPECT_LT(std::abs(previous - e0) / e0, integrator == Integrator::kVelocityVerlet ? 0.02 : 0.1);
+    }
+  }
+}
+
+TEST(Simulator, FreeBodyKeepsItsMomentum) {
+  const Box box;
+  const model::Problem p = model::make_problem(box.model);
+  VecX v(box.model->dof_count());
+  for (Eigen::Index i = 0; i < v.size(); ++i) v(i) = 0.01 * std::sin(1.3 * i) + (i % 3 == 0 ? 0.05 : 0.0);
+  for (Integrator integrator : {Integrator::kSymplecticEuler, Integrator::kVelocityVerlet, Integrator::kImplicitEuler,
+                                Integrator::kLocalGlobal}) {
+    SimulatorOptions o;
+    o.integrator = integrator;
+    Simulator s(p, {box.mass, VecX(), 0.0, 0.0}, o);
+    s.set_state(box.stretched(), v);
+    const VecX p0 = s.momentum();
+    for (int i = 0; i < 100; ++i) s.step(1e-4);
+    EXPECT_LT((s.momentum() - p0).norm(), 1e-10 * p0.norm()) << integrator_name(integrator);
+  }
+}
+
+TEST(Simulator, RigidlyRotatedMeshHasNoInternalForces) {
+  const Box box;
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  VecX x = box.model->rest_positions();
+  for (int i = 0; i < box.mesh.node_count(); ++i) x.segment<3>(3 * i) = r * x.segment<3>(3 * i) + Vec3(0.1, -0.2, 0.3);
+  EXPECT_LT(box.model->gradient(x).norm(), 1e-12);
+  model::Model fem(3, box.model->rest_positions());
+  fem.add(fem::make_elastic_block(box.mesh, {material::Law::kStVK, 14630.0, 0.25}));
+  EXPECT_LT(fem.gradient(x).norm(), 1e-12);
+}
+
+// Gravity on a clamped box: implicit Euler with damping and quasi-static steps settle where the static solver
+// ends.
+TEST(Simulator, ImplicitAndQuasiStaticSettleToTheStaticEquilibrium) {
+  const Box box;
+  const model::Problem p = box.clamped();
+  VecX g(3);
+  g << 9.81, 0.0, 0.0;  // sideways: the column bends
+  model::Problem statics = p;
+  statics.external_force = VecX::Zero(box.model->dof_count());
+  for (Eigen::Index i = 0; i < statics.external_force.size(); ++i)
+    if (!p.fixed_dofs[static_cast<size_t>(i)]) statics.external_force(i) = box.mass(i) * g(i % 3);
+  const StaticResult ref = static_equilibrium(statics);
+  ASSERT_EQ(ref.report.status, SolveStatus::kConverged);
+  const double scale = (ref.positions - box.model->rest_positions()).cwiseAbs().maxCoeff();
+  for (Integrator integrator : {Integrator::kImplicitEuler, Integrator::kQuasiStatic, Integrator::kLocalGlobal}) {
+    SimulatorOptions o;
+    o.integrator = integrator;
+    o.local_global_iterations = 20;
+    Simulator s(p, {box.mass, g, 20.0, 0.0}, o);
+    const int steps = integrator == Integrator::kQuasiStatic ? 1 : 1500;
+    for (int i = 0; i < steps; ++i) s.step(0.002);
+    const double err = (s.positions() - ref.positions).cwiseAbs().maxCoeff();
+    std::cout << "[settle] " << integrator_name(integrator) << ": |x - x_static|_max / |u_static|_max = " << err / scale
+              << "\n";
+    EXPECT_LT(err, 1e-3 * scale) << integrator_name(integrator);
+  }
+}
+
+TEST(Simulator, RejectsMasslessFreeNodesAndLocalGlobalOnFem) {
+  const Box box;
+  const model::Problem p = model::make_problem(box.model);
+  EXPECT_THROW(Simulator(p, {VecX::Zero(box.model->dof_count()), VecX(), 0.0, 0.0}), InvalidArgument);
+  auto fem = std::make_shared<model::Model>(3, box.model->rest_positions());
+  fem->add(fem::make_elastic_block(box.mesh, {material::Law::kLinear, 14630.0, 0.25}));
+  SimulatorOptions o;
+  o.integrator = Integrator::kLocalGlobal;
+  EXPECT_THROW(Simulator(model::make_problem(fem), {box.mass, VecX(), 0.0, 0.0}, o), InvalidArgument);
+  EXPECT_EQ(integrator_name(integrator_from_name("velocity-verlet")), "velocity-verlet");
+  EXPECT_THROW(integrator_from_name("rk4"), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace hooke::solve
