@@ -187,6 +187,39 @@ TEST(Simulator, ImplicitAndQuasiStaticSettleToTheStaticEquilibrium) {
   }
 }
 
+// The probe: pushing a top node with a force F and driving it to where the push left it render the same
+// force -F on the device; the reaction of a drive is linear in a small offset.
+TEST(Simulator, ProbePushAndDriveRenderTheSameForce) {
+  const Box box;
+  const model::Problem p = box.clamped();
+  int tip = -1;
+  for (int i = 0; i < box.mesh.node_count(); ++i)
+    if (box.mesh.nodes(i, 2) == 0.04 && box.mesh.nodes(i, 0) == 0.01 && box.mesh.nodes(i, 1) == 0.01) tip = i;
+  ASSERT_GE(tip, 0);
+  SimulatorOptions o;
+  o.integrator = Integrator::kQuasiStatic;
+  o.newton_tolerance = 1e-13;
+  Simulator push(p, {box.mass, VecX(), 0.0, 0.0}, o);
+  const Probe probe{{tip}, false, VecX(), Vec3(0.0, 2e-4, 5e-4)};
+  push.set_probe(probe);
+  StepReport r = push.step(0.01);
+  EXPECT_LT((r.probe_force + probe.force).norm(), 1e-15);
+  const Vec3 moved = (push.positions() - box.model->rest_positions()).segment<3>(3 * tip);
+
+  Simulator drive(p, {box.mass, VecX(), 0.0, 0.0}, o);
+  drive.set_probe({{tip}, true, Vec3::Zero(), VecX()});
+  drive.set_probe({{tip}, true, moved, VecX()});
+  r = drive.step(0.01);
+  std::cout << "[probe] push F = " << probe.force.transpose() << " N moves the node by " << moved.transpose()
+            << " m; driving it there renders " << r.probe_force.transpose() << " N\n";
+  EXPECT_LT((r.probe_force + probe.force).norm(), 1e-6 * probe.force.norm());
+  drive.set_probe({{tip}, true, 2.0 * moved, VecX()});
+  const VecX twice = drive.step(0.01).probe_force;
+  EXPECT_LT((twice - 2.0 * r.probe_force).norm(), 0.01 * r.probe_force.norm());
+  drive.set_probe({});  // released: free again, no probe force
+  EXPECT_EQ(drive.step(0.01).probe_force.norm(), 0.0);
+}
+
 TEST(Simulator, RejectsMasslessFreeNodesAndLocalGlobalOnFem) {
   const Box box;
   const model::Problem p = model::make_problem(box.model);

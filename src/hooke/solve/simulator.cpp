@@ -60,6 +60,17 @@ struct Simulator::Impl {
   SparseMatrix lg_a;  // M/dt^2 + D/dt + L, full DOFs
   SparseCholesky lg_factor;
   double lg_dt = -1.0;
+  Probe probe;
+  VecX grab_positions;           // positions of the probe nodes' DOFs when grabbed
+  std::vector<char> base_fixed;  // fixed DOFs of the problem without the probe
+
+  // Rebuilds the free-DOF map after the fixed set changed; factorisations are redone on their next use.
+  void refix() {
+    free = detail::FreeMap(unfixed(problem), model().dof_count());
+    lg_dt = -1.0;
+    cg_guess.resize(0);
+    stable_dt_cache = -1.0;
+  }
 
   Impl(model::Problem p, Dynamics d, SimulatorOptions o)
       : problem(std::move(p)), dyn(std::move(d)), opt(o), free(unfixed(problem), problem.model->dof_count()) {}
@@ -82,8 +93,28 @@ struct Simulator::Impl {
 
   void update_loads() {
     f_total = problem.external_force.size() == x.size() ? problem.external_force : VecX::Zero(x.size());
-    if (dyn.gravity.size() == model().dim())
-      for (Eigen::Index i = 0; i < x.size(); ++i) f_total(i) += dyn.mass(i) * dyn.gravity(i % model().dim());
+    const int d = model().dim();
+    if (dyn.gravity.size() == d)
+      for (Eigen::Index i = 0; i < x.size(); ++i) f_total(i) += dyn.mass(i) * dyn.gravity(i % d);
+    if (!probe.nodes.empty() && !probe.drive_position)
+      for (int node : probe.nodes)
+        f_total.segment(d * node, d) += probe.force / static_cast<double>(probe.nodes.size());
+    if (!probe.nodes.empty() && probe.drive_position) {
+      if (problem.prescribed_positions.size() != x.size()) problem.prescribed_positions = model().rest_positions();
+      for (size_t k = 0; k < probe.nodes.size(); ++k)
+        problem.prescribed_positions.segment(d * probe.nodes[k], d) =
+            grab_positions.segment(d * static_cast<Eigen::Index>(k), d) + probe.offset;
+    }
+  }
+
+  VecX probe_force() {
+    const int d = model().dim();
+    VecX out = VecX::Zero(d);
+    if (probe.nodes.empty()) return out;
+    if (!probe.drive_position) return -probe.force;
+    const VecX g = model().gradient(x) - f_total;
+    for (int node : probe.nodes) out -= g.segment(d * node, d);
+    return out;
   }
 
   // Acceleration on the free DOFs (zero on fixed), from the elastic gradient at x and velocity w.
@@ -344,6 +375,7 @@ Simulator::Simulator(model::Problem problem, Dynamics dynamics, SimulatorOptions
     for (int i = 0; i < nd; ++i) m->damping.coeffRef(i, i) += m->dyn.mass_damping * m->dyn.mass(i);
   }
   if (options.integrator == Integrator::kLocalGlobal) m->setup_local_global();
+  m->base_fixed = m->problem.fixed_dofs;
   m->x = model::initial_positions(m->problem);
   m->v = VecX::Zero(nd);
 }
@@ -364,6 +396,7 @@ StepReport Simulator::step(double dt) {
     case Integrator::kLocalGlobal: r = m->local_global_step(dt); break;
   }
   m->time_s += dt;
+  r.probe_force = m->probe_force();
   return r;
 }
 
@@ -378,6 +411,27 @@ void Simulator::set_state(const VecX& positions, const VecX& velocities) {
   m->gradient_valid = false;
 }
 model::Problem& Simulator::problem() { return m->problem; }
+
+void Simulator::set_probe(const Probe& probe) {
+  const int d = m->model().dim(), n = m->model().node_count();
+  for (int node : probe.nodes)
+    if (node < 0 || node >= n) throw InvalidArgument("probe node " + std::to_string(node) + " is not in the model");
+  if (!probe.nodes.empty() &&
+      ((probe.drive_position && probe.offset.size() != d) || (!probe.drive_position && probe.force.size() != d)))
+    throw InvalidArgument("the probe's offset or force needs one component per axis");
+  const bool same = probe.nodes == m->probe.nodes && probe.drive_position == m->probe.drive_position;
+  if (!same) {
+    m->problem.fixed_dofs = m->base_fixed;
+    m->grab_positions.resize(d * static_cast<Eigen::Index>(probe.nodes.size()));
+    for (size_t k = 0; k < probe.nodes.size(); ++k) {
+      m->grab_positions.segment(d * static_cast<Eigen::Index>(k), d) = m->x.segment(d * probe.nodes[k], d);
+      if (probe.drive_position)
+        for (int a = 0; a < d; ++a) m->problem.fixed_dofs[static_cast<size_t>(d * probe.nodes[k] + a)] = 1;
+    }
+    m->refix();
+  }
+  m->probe = probe;
+}
 const Dynamics& Simulator::dynamics() const { return m->dyn; }
 double Simulator::kinetic_energy() const { return 0.5 * m->v.cwiseAbs2().dot(m->dyn.mass); }
 double Simulator::potential_energy() const {

@@ -24,12 +24,25 @@ struct SimulatorOptions {
   bool project_psd = true;           ///< project element Hessians to PSD in Newton steps
 };
 
+/// A haptic or mouse probe: it grabs nodes and either drives them (as a stiff haptic device or a mouse drag
+/// would) or pushes on them with a force.
+struct Probe {
+  std::vector<int> nodes;      ///< grabbed nodes (empty = no probe)
+  bool drive_position = true;  ///< true: the nodes follow grab position + offset; false: `force` is applied
+  VecX offset;                 ///< drive: displacement of the grabbed nodes from where they were grabbed, m (dim)
+  VecX force;                  ///< push: total force, spread equally over the nodes, N (dim)
+};
+
 /// What one step did.
 struct StepReport {
   int iterations = 0;             ///< Newton or local/global iterations (0 for explicit steps)
   double residual = 0.0;          ///< |gradient of the step's objective| on the free DOFs at the end, N (0 explicit)
   bool converged = true;          ///< false when Newton hit max_newton_iterations above tolerance
   bool beyond_stable_dt = false;  ///< explicit only: dt exceeded stable_time_step()
+  /// The force the body exerts on the probe at the end of the step, N (dim; zero without a probe): what a
+  /// haptic device renders. Driven nodes: minus the force needed to hold them, sum over them of
+  /// -(dE/dx - loads) (their own inertia excluded); pushed nodes: minus the applied force.
+  VecX probe_force;
 };
 
 /// Steps a problem (model, fixed DOFs with their prescribed positions, dead external forces) in time.
@@ -52,8 +65,14 @@ class Simulator {
   const VecX& velocities() const;  ///< flat, m/s
   void set_state(const VecX& positions, const VecX& velocities);
 
-  /// The problem being simulated: change external_force or prescribed_positions between steps.
+  /// The problem being simulated: change external_force or prescribed_positions between steps (not fixed_dofs:
+  /// use set_probe to hold nodes during a run).
   model::Problem& problem();
+
+  /// Grabs probe.nodes at their current positions (or updates offset / force of the current probe when the
+  /// nodes are the same). An empty node list releases the probe.
+  /// @throws InvalidArgument on a node out of range or an offset / force without dim components
+  void set_probe(const Probe& probe);
   const Dynamics& dynamics() const;
 
   double kinetic_energy() const;  ///< 1/2 v^T M v, J
