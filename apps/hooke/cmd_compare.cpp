@@ -19,18 +19,18 @@ namespace hooke::cli {
 namespace {
 
 struct CompareCli {
-  std::string mesh_path, method = "lloyd-tet", load = "stretch", reference = "linear", unit = "m", out_dir,
-                         plane = "stress";
+  ModelInput in;
+  std::string method = "lloyd-tet", load = "stretch", reference = "linear", out_dir, plane = "stress";
   bool no_figure = false;
-  double young = 0.0, poisson = 0.0, thickness = 1e-3, traction = std::nan(""), strain = std::nan("");
+  double traction = std::nan(""), strain = std::nan("");
 };
 
 int run_compare(const CompareCli& o) {
   io::ReadOptions ro;
-  ro.metres_per_unit = metres_per_unit(o.unit);
-  const mesh::Mesh m = io::read_mesh(o.mesh_path, ro);
-  material::Material mat{material::Law::kLinear, o.young, o.poisson,
-                         o.plane == "strain" ? material::Plane::kStrain : material::Plane::kStress, o.thickness};
+  ro.metres_per_unit = metres_per_unit(o.in.unit);
+  const mesh::Mesh m = io::read_mesh(o.in.mesh_path, ro);
+  material::Material mat{material::Law::kLinear, o.in.young, o.in.poisson,
+                         o.plane == "strain" ? material::Plane::kStrain : material::Plane::kStress, o.in.thickness};
   material::validate(mat);
   if (std::isnan(o.traction) == std::isnan(o.strain))
     throw InvalidArgument("give exactly one of --traction and --strain");
@@ -42,7 +42,7 @@ int run_compare(const CompareCli& o) {
   co.strain = std::isnan(o.strain) ? 0.0 : o.strain;
   const experiments::Comparison c = experiments::compare(m, {mat}, co);
   const double to_unit = 1.0 / ro.metres_per_unit;
-  std::printf("hooke compare: %s, %s springs (%zu) vs %s FEM, %s, traction %.6g Pa\n", o.mesh_path.c_str(),
+  std::printf("hooke compare: %s, %s springs (%zu) vs %s FEM, %s, traction %.6g Pa\n", o.in.mesh_path.c_str(),
               o.method.c_str(), c.springs.pairs.size(), o.reference.c_str(), o.load.c_str(), c.load.traction_pa);
   std::printf("  fem       %s: %s\n", std::string(solve::status_name(c.fem_report.status)).c_str(),
               c.fem_report.message.c_str());
@@ -51,7 +51,7 @@ int run_compare(const CompareCli& o) {
   solve::require_converged(c.fem_report);
   solve::require_converged(c.spring_report);
   std::printf("  error     max %.4g %s (%.3f %% of height), mean %.4g %s (%.3f %% of height)\n", c.max_error * to_unit,
-              o.unit.c_str(), 100.0 * c.max_error / c.load.height, c.mean_error * to_unit, o.unit.c_str(),
+              o.in.unit.c_str(), 100.0 * c.max_error / c.load.height, c.mean_error * to_unit, o.in.unit.c_str(),
               100.0 * c.mean_error / c.load.height);
   if (!o.out_dir.empty()) {
     std::filesystem::create_directories(o.out_dir);
@@ -66,7 +66,7 @@ int run_compare(const CompareCli& o) {
     std::snprintf(title, sizeof title, "%s, %s vs %s FEM\nmax %.3g cm, mean %.3g cm", o.load.c_str(), o.method.c_str(),
                   o.reference.c_str(), 100.0 * c.max_error, 100.0 * c.mean_error);
     experiments::Figure fig{"compare",
-                            std::filesystem::path(o.mesh_path).filename().string() + " (MSM red, FEM black)",
+                            std::filesystem::path(o.in.mesh_path).filename().string() + " (MSM red, FEM black)",
                             {experiments::deformation_panel(title, m, c.fem_positions, m, c.spring_positions)}};
     experiments::write_figure_spec(o.out_dir, fig);
     if (!o.no_figure) {
@@ -82,9 +82,7 @@ int run_compare(const CompareCli& o) {
 Action add_compare_command(CLI::App& app) {
   auto o = std::make_shared<CompareCli>();
   CLI::App* cmd = app.add_subcommand("compare", "Compare a calibrated spring model with the FEM reference");
-  cmd->add_option("mesh", o->mesh_path, "Mesh file")->required();
-  cmd->add_option("--young", o->young, "Young's modulus E, Pa")->required();
-  cmd->add_option("--poisson", o->poisson, "Poisson's ratio nu, in (-1, 0.5)")->required();
+  add_model_input_options(cmd, o->in);
   cmd->add_option("--method", o->method,
                   "Calibration method (vangelder, lloyd-equilateral, lloyd-triangle, lloyd-square, "
                   "lloyd-tet, lloyd-tet-volume, stiffness-fit, stiffness-fit-volume)")
@@ -93,8 +91,6 @@ Action add_compare_command(CLI::App& app) {
   cmd->add_option("--traction", o->traction, "Traction on the top boundary, Pa");
   cmd->add_option("--strain", o->strain, "Traction giving this mean top strain in the linear FEM");
   cmd->add_option("--reference", o->reference, "FEM law: linear, stvk or neohookean")->capture_default_str();
-  cmd->add_option("--unit", o->unit, "Length unit of the mesh file and of the printed errors")->capture_default_str();
-  cmd->add_option("--thickness", o->thickness, "Plate thickness for 2D meshes, m")->capture_default_str();
   cmd->add_option("--plane", o->plane, "2D model: stress or strain")->capture_default_str();
   cmd->add_option("-o,--output", o->out_dir,
                   "Folder for compare.vtu (both displacement fields and the node error) and compare.png");

@@ -18,27 +18,28 @@ namespace hooke::cli {
 namespace {
 
 struct FemOptions {
-  std::string mesh_path, output, csv, unit = "m", load = "stretch", law = "linear", plane = "stress";
-  double young = 0.0, poisson = 0.0, thickness = 1e-3;
+  ModelInput in;
+  std::string output, csv, load = "stretch", law = "linear", plane = "stress";
   double traction = std::nan(""), strain = std::nan("");
 };
 
 int run_fem(const FemOptions& o) {
   io::ReadOptions ro;
-  ro.metres_per_unit = metres_per_unit(o.unit);
-  const mesh::Mesh m = io::read_mesh(o.mesh_path, ro);
+  ro.metres_per_unit = metres_per_unit(o.in.unit);
+  const mesh::Mesh m = io::read_mesh(o.in.mesh_path, ro);
   material::Material mat;
   mat.law = material::law_from_name(o.law);
-  mat.youngs_modulus = o.young;
-  mat.poisson_ratio = o.poisson;
-  mat.thickness = o.thickness;
+  mat.youngs_modulus = o.in.young;
+  mat.poisson_ratio = o.in.poisson;
+  mat.thickness = o.in.thickness;
   if (o.plane != "stress" && o.plane != "strain") throw InvalidArgument("--plane takes stress or strain");
   mat.plane = o.plane == "stress" ? material::Plane::kStress : material::Plane::kStrain;
   material::validate(mat);
   const experiments::LoadKind kind = experiments::load_kind_from_name(o.load);
   if (std::isnan(o.traction) == std::isnan(o.strain))
     throw InvalidArgument("give exactly one of --traction and --strain");
-  const double traction = std::isnan(o.strain) ? o.traction : experiments::traction_for_strain(m, {mat}, kind, o.strain);
+  const double traction =
+      std::isnan(o.strain) ? o.traction : experiments::traction_for_strain(m, {mat}, kind, o.strain);
 
   auto model = std::make_shared<model::Model>(m.dim(), Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size()));
   model->add(fem::make_elastic_block(m, mat));
@@ -49,7 +50,7 @@ int run_fem(const FemOptions& o) {
       mat.law == material::Law::kLinear ? solve::linear_static(problem) : solve::static_equilibrium(problem);
   const solve::SolveReport& rep = r.report;
 
-  std::printf("hooke fem: %s\n", o.mesh_path.c_str());
+  std::printf("hooke fem: %s\n", o.in.mesh_path.c_str());
   std::printf("  mesh      %d nodes, %d %s elements, %d DOFs (%d free)\n", m.node_count(), m.element_count(),
               std::string(mesh::element_kind_name(m.kind)).c_str(), model->dof_count(), rep.free_dofs);
   std::printf("  material  %s, E = %g Pa, nu = %g%s\n", std::string(material::law_name(mat.law)).c_str(),
@@ -90,12 +91,8 @@ int run_fem(const FemOptions& o) {
 Action add_fem_command(CLI::App& app) {
   auto o = std::make_shared<FemOptions>();
   CLI::App* cmd = app.add_subcommand("fem", "Solve a load case with the FEM reference (linear, StVK or Neo-Hookean)");
-  cmd->add_option("mesh", o->mesh_path, "Mesh file (.msh, .vtu, .node/.ele, .obj, .off, .stl)")->required();
-  cmd->add_option("--young", o->young, "Young's modulus E, Pa")->required();
-  cmd->add_option("--poisson", o->poisson, "Poisson's ratio nu, in (-1, 0.5)")->required();
-  cmd->add_option("--thickness", o->thickness, "Plate thickness for 2D meshes, m")->capture_default_str();
+  add_model_input_options(cmd, o->in);
   cmd->add_option("--plane", o->plane, "2D model: stress or strain")->capture_default_str();
-  cmd->add_option("--unit", o->unit, "Length unit of the mesh file: m, cm, mm, um")->capture_default_str();
   cmd->add_option("--load", o->load, "Load case: stretch, compress or shear")->capture_default_str();
   cmd->add_option("--traction", o->traction, "Traction on the top boundary, Pa");
   cmd->add_option("--strain", o->strain,

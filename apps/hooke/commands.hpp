@@ -2,10 +2,20 @@
 // Sub-commands of the hooke tool. Each registers its options on `app` and returns the action to run.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
 
 namespace hooke::cli {
 
 using Action = std::function<int()>;
+
+/// What every model-building command reads: the mesh file, its length unit, E, nu and the 2D thickness.
+struct ModelInput {
+  std::string mesh_path, unit = "m";
+  double young = 0.0, poisson = 0.0, thickness = 1e-3;
+};
+
+/// Registers MESH, --young, --poisson, --unit and --thickness on `cmd`, bound to `in`.
+void add_model_input_options(CLI::App* cmd, ModelInput& in);
 
 /// `hooke fem`: linear or nonlinear FEM reference solve of a load case.
 Action add_fem_command(CLI::App& app);
@@ -13,6 +23,8 @@ Action add_fem_command(CLI::App& app);
 Action add_compare_command(CLI::App& app);
 /// `hooke reproduce lloyd2007`: the paper's Sec. 5 experiments and a report.
 Action add_reproduce_command(CLI::App& app);
+/// `hooke simulate`: dynamics with a ParaView time series and a timing report.
+Action add_simulate_command(CLI::App& app);
 /// `hooke mesh info|convert`: inspect and convert meshes.
 Action add_mesh_command(CLI::App& app);
 

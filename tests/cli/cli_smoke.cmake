@@ -47,3 +47,27 @@ execute_process(COMMAND /usr/bin/python3 ${SCRIPTS}/plot_figures.py ${OUT}/bad.j
 if(NOT rc EQUAL 2 OR EXISTS ${OUT}/bad.png)
   message(FATAL_ERROR "a bad figure spec must fail with exit code 2 and write nothing (got ${rc}: ${err})")
 endif()
+
+# hooke simulate: the cylinder under gravity writes a ParaView series whose frames meshio reads back; an
+# explicit step far beyond the stability limit fails with exit code 3 and leaves no series.
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.25 --method lloyd-tet
+                        --integrator implicit-euler --dt 0.001 --steps 50 --gravity -o ${OUT}/sim
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "ms/step median")
+  message(FATAL_ERROR "hooke simulate failed: ${rc}")
+endif()
+execute_process(COMMAND /usr/bin/python3 -c
+  "import sys, os, meshio, xml.etree.ElementTree as ET; d=os.path.dirname(sys.argv[1]); sets=ET.parse(sys.argv[1]).getroot().iter('DataSet'); fr=[(float(s.get('timestep')), meshio.read(os.path.join(d, s.get('file')))) for s in sets]; assert len(fr)==51 and abs(fr[-1][0]-0.05)<1e-12; u=fr[-1][1].point_data['displacement']; assert u.shape==(87,3) and u[:,2].min()<-1e-6; print('pvd:', len(fr), 'frames, last at', fr[-1][0], 's, min u_z', u[:,2].min())"
+  ${OUT}/sim/simulation.pvd RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the simulation series does not read back")
+endif()
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.25 --integrator
+                        symplectic-euler --dt 0.01 --steps 20 --gravity -o ${OUT}/sim_bad
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 3 OR NOT err MATCHES "stability limit" OR EXISTS ${OUT}/sim_bad/simulation.pvd
+   OR EXISTS ${OUT}/sim_bad/frames.partial)
+  message(FATAL_ERROR "an unstable explicit run must fail with exit code 3 and leave no series (got ${rc}: ${err})")
+endif()
