@@ -73,3 +73,26 @@ INSTANTIATE_TEST_SUITE_P(Table1, CubeSurface,
 
 }  // namespace
 }  // namespace hooke::mesh
+
+namespace hooke::mesh {
+namespace {
+
+// The benchmark cylinders: node counts as documented, every tet positive, the concentric map keeps each cell's
+// volume, so the total is the inscribed polygonal prism's (pi r^2 h from below).
+TEST(Generators, TetCylinderCountsAndPositiveVolumes) {
+  const Mesh m = tet_cylinder(0.01, 0.02, 10, 8);
+  EXPECT_EQ(m.node_count(), 11 * 11 * 9);
+  EXPECT_EQ(m.element_count(), 6 * 100 * 8);
+  double total = 0.0, smallest = 1.0;
+  for (int e = 0; e < m.element_count(); ++e) {
+    total += element_measure(m, e);
+    smallest = std::min(smallest, element_measure(m, e));
+  }
+  EXPECT_GT(smallest, 0.0);
+  EXPECT_LT(total, M_PI * 1e-4 * 0.02);
+  EXPECT_GT(total, 0.99 * M_PI * 1e-4 * 0.02);
+  EXPECT_NEAR(m.nodes.col(0).cwiseAbs().maxCoeff(), 0.01, 1e-15);
+}
+
+}  // namespace
+}  // namespace hooke::mesh

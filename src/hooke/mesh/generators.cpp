@@ -139,6 +139,27 @@ Mesh tet_box(double lx, double ly, double lz, int nx, int ny, int nz) {
   return make_mesh(ElementKind::kTet, to_rows(xyz, 3), to_rows(tets, 4), "tet box");
 }
 
+Mesh tet_cylinder(double radius, double height, int n, int layers) {
+  require(n >= 2 && n % 2 == 0 && layers >= 1 && radius > 0.0 && height > 0.0,
+          "tet_cylinder: needs an even n >= 2, layers >= 1 and a positive size");
+  Mesh m = tet_box(2.0, 2.0, height, n, n, layers);
+  for (int i = 0; i < m.node_count(); ++i) {
+    const double a = m.nodes(i, 0) - 1.0, b = m.nodes(i, 1) - 1.0;  // in [-1, 1]^2
+    double r = 0.0, phi = 0.0;
+    if (std::abs(a) > std::abs(b)) {
+      r = a;
+      phi = M_PI / 4.0 * (b / a);
+    } else if (b != 0.0) {
+      r = b;
+      phi = M_PI / 2.0 - M_PI / 4.0 * (a / b);
+    }
+    m.nodes(i, 0) = radius * r * std::cos(phi);
+    m.nodes(i, 1) = radius * r * std::sin(phi);
+  }
+  m.source = "tet cylinder";
+  return m;
+}
+
 Mesh cube_surface(int n, double size) {
   require(n >= 1 && size > 0.0, "cube_surface: needs n >= 1 and size > 0");
   std::map<std::array<int, 3>, int> id;

@@ -35,6 +35,13 @@ Mesh rectangle_triangles(double width, double height, int nx, int ny, Diagonal d
 /// @pre n* >= 1; l* > 0 (m)
 Mesh tet_box(double lx, double ly, double lz, int nx, int ny, int nz);
 
+/// Cylinder of `radius` and `height` (m), axis along z from z = 0: a tet_box of n x n x layers cells over
+/// the square [-1, 1]^2 mapped onto the disc by the area-preserving concentric map (Shirley and Chiu 1997),
+/// so every cell keeps its volume. Deterministic; (n+1)^2 (layers+1) nodes, 6 n^2 layers tets.
+/// n = 10, 20, 44 with layers = 8, 24, 50 give about 1 000, 11 000 and 103 000 nodes (issue 4's benchmarks).
+/// @pre n >= 2 even, layers >= 1, radius, height > 0
+Mesh tet_cylinder(double radius, double height, int n, int layers);
+
 /// Closed surface of the cube [0, size]^3 with n x n squares per face, each split into two triangles,
 /// oriented with outward normals: 6 n^2 + 2 nodes (602, 1352, 2402 for n = 10, 15, 20), 12 n^2 triangles.
 /// @pre n >= 1, size > 0 (m)

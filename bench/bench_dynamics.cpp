@@ -1,0 +1,113 @@
+// Dynamics on tetrahedral cylinders (r 1 cm, h 2 cm; mesh::tet_cylinder) of about 1 000, 11 000 and 103 000
+// nodes with lloyd-tet springs (E 14 630 Pa, nu 0.25, 1 000 kg/m^3), bottom clamped, gravity:
+// - spring-force evaluation throughput (ns/spring) and its fraction of the memory-bandwidth bound, against a
+//   STREAM-like triad measured first in the same run;
+// - ms/step of each integrator: implicit ones at dt = 1 ms, explicit ones at 0.9 x their stability limit
+//   (dt = 1 ms is beyond it on these meshes; the counter dt_ms says which).
+// Run: build/release/bench/hooke_bench --benchmark_filter='Triad|Spring|Step'
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <hooke/calibrate/method.hpp>
+#include <hooke/experiments/load_case.hpp>
+#include <hooke/mesh/generators.hpp>
+#include <hooke/model/mass.hpp>
+#include <hooke/solve/simulator.hpp>
+#include <hooke/springs/spring_block.hpp>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace {
+
+using namespace hooke;
+
+double g_triad_bytes_per_second = 0.0;  // set by BM_DynTriad, which runs first
+
+struct Cylinder {
+  mesh::Mesh mesh;
+  std::shared_ptr<model::Model> model;
+  model::Problem problem;
+  solve::Dynamics dynamics;
+  const springs::SpringBlock* springs = nullptr;
+  explicit Cylinder(int size) {
+    const int n[3] = {10, 20, 44}, layers[3] = {8, 24, 50};
+    mesh = mesh::tet_cylinder(0.01, 0.02, n[size], layers[size]);
+    model = calibrate::make_model(
+        mesh, calibrate::calibrate(mesh, {{material::Law::kLinear, 14630.0, 0.25}}, calibrate::Method::kLloydTet));
+    for (const auto& b : model->blocks())
+      if (const auto* s = dynamic_cast<const springs::SpringBlock*>(b.get())) springs = s;
+    problem = model::make_problem(model);
+    model::fix_nodes(problem, experiments::make_load_case(mesh, experiments::LoadKind::kStretch, 0.0).fixed_nodes);
+    VecX g = VecX::Zero(3);
+    g(2) = -9.81;
+    dynamics = {model::lumped_masses(mesh, 1000.0), g, 0.0, 0.0};
+  }
+};
+
+Cylinder& cylinder(int size) {
+  static std::map<int, std::unique_ptr<Cylinder>> cache;
+  auto& c = cache[size];
+  if (!c) c = std::make_unique<Cylinder>(size);
+  return *c;
+}
+
+void BM_DynTriad(benchmark::State& state) {
+  const size_t n = 1 << 24;
+  std::vector<double> a(n, 0.0), b(n, 1.0), c(n, 2.0);
+  double best = 1e300;  // fastest pass: the bandwidth the machine can deliver in this run
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (size_t i = 0; i < n; ++i) a[i] = b[i] + 3.0 * c[i];
+    benchmark::DoNotOptimize(a.data());
+    benchmark::ClobberMemory();
+    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  g_triad_bytes_per_second = 3.0 * n * sizeof(double) / best;
+  const double bytes = static_cast<double>(state.iterations()) * 3.0 * n * sizeof(double);
+  state.SetBytesProcessed(static_cast<int64_t>(bytes));
+  state.counters["GBps"] = benchmark::Counter(bytes / 1e9, benchmark::Counter::kIsRate);
+}
+
+// Bytes a spring-force pass must move at least: per spring two indices, k and l0 (24 B), two node positions
+// read and two gradient entries read and written (3 doubles each: 144 B) when nothing stays in cache: 168 B.
+void BM_SpringForces(benchmark::State& state) {
+  Cylinder& c = cylinder(static_cast<int>(state.range(0)));
+  const VecX x = c.model->rest_positions() * 1.01;
+  VecX g = VecX::Zero(x.size());
+  for (auto _ : state) {
+    g.setZero();
+    c.springs->add_gradient(x, g);
+    benchmark::DoNotOptimize(g.data());
+  }
+  const double springs = static_cast<double>(c.springs->pairs().size());
+  state.counters["nodes"] = c.mesh.node_count();
+  state.counters["springs"] = springs;
+  state.counters["ns_per_spring"] =
+      benchmark::Counter(springs, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["GBps"] = benchmark::Counter(springs * 168.0 / 1e9, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["fraction_of_triad"] = benchmark::Counter(springs * 168.0 / std::max(g_triad_bytes_per_second, 1.0),
+                                                           benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void BM_Step(benchmark::State& state) {
+  Cylinder& c = cylinder(static_cast<int>(state.range(0)));
+  const auto integrator = static_cast<solve::Integrator>(state.range(1));
+  solve::SimulatorOptions o;
+  o.integrator = integrator;
+  solve::Simulator sim(c.problem, c.dynamics, o);
+  const bool explicit_step =
+      integrator == solve::Integrator::kSymplecticEuler || integrator == solve::Integrator::kVelocityVerlet;
+  const double dt = explicit_step ? 0.9 * sim.stable_time_step() : 1e-3;
+  sim.step(dt);  // first step: symbolic analysis, factorisations
+  for (auto _ : state) benchmark::DoNotOptimize(sim.step(dt).iterations);
+  state.SetLabel(std::string(solve::integrator_name(integrator)));
+  state.counters["nodes"] = c.mesh.node_count();
+  state.counters["dt_ms"] = 1e3 * dt;
+}
+
+}  // namespace
+
+BENCHMARK(BM_DynTriad)->Unit(benchmark::kMillisecond)->Iterations(5);
+BENCHMARK(BM_SpringForces)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Step)->ArgsProduct({{0, 1}, {0, 1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->MinTime(1.0);
