@@ -7,22 +7,20 @@
 // Run: build/release/bench/hooke_bench --benchmark_filter='Triad|Spring|Step'
 #include <benchmark/benchmark.h>
 
-#include <chrono>
 #include <hooke/calibrate/method.hpp>
 #include <hooke/experiments/load_case.hpp>
 #include <hooke/mesh/generators.hpp>
 #include <hooke/model/mass.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <hooke/springs/spring_block.hpp>
-#include <map>
 #include <memory>
 #include <string>
+
+#include "bench_common.hpp"
 
 namespace {
 
 using namespace hooke;
-
-double g_triad_bytes_per_second = 0.0;  // set by BM_DynTriad, which runs first
 
 struct Cylinder {
   mesh::Mesh mesh;
@@ -45,34 +43,12 @@ struct Cylinder {
   }
 };
 
-Cylinder& cylinder(int size) {
-  static std::map<int, std::unique_ptr<Cylinder>> cache;
-  auto& c = cache[size];
-  if (!c) c = std::make_unique<Cylinder>(size);
-  return *c;
-}
-
-void BM_DynTriad(benchmark::State& state) {
-  const size_t n = 1 << 24;
-  std::vector<double> a(n, 0.0), b(n, 1.0), c(n, 2.0);
-  double best = 1e300;  // fastest pass: the bandwidth the machine can deliver in this run
-  for (auto _ : state) {
-    const auto t0 = std::chrono::steady_clock::now();
-    for (size_t i = 0; i < n; ++i) a[i] = b[i] + 3.0 * c[i];
-    benchmark::DoNotOptimize(a.data());
-    benchmark::ClobberMemory();
-    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  }
-  g_triad_bytes_per_second = 3.0 * n * sizeof(double) / best;
-  const double bytes = static_cast<double>(state.iterations()) * 3.0 * n * sizeof(double);
-  state.SetBytesProcessed(static_cast<int64_t>(bytes));
-  state.counters["GBps"] = benchmark::Counter(bytes / 1e9, benchmark::Counter::kIsRate);
-}
+void BM_DynTriad(benchmark::State& state) { bench::run_triad(state); }
 
 // Bytes a spring-force pass must move at least: per spring two indices, k and l0 (24 B), two node positions
 // read and two gradient entries read and written (3 doubles each: 144 B) when nothing stays in cache: 168 B.
 void BM_SpringForces(benchmark::State& state) {
-  Cylinder& c = cylinder(static_cast<int>(state.range(0)));
+  Cylinder& c = bench::cached<Cylinder>(static_cast<int>(state.range(0)));
   const VecX x = c.model->rest_positions() * 1.01;
   VecX g = VecX::Zero(x.size());
   for (auto _ : state) {
@@ -86,12 +62,12 @@ void BM_SpringForces(benchmark::State& state) {
   state.counters["ns_per_spring"] =
       benchmark::Counter(springs, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   state.counters["GBps"] = benchmark::Counter(springs * 168.0 / 1e9, benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["fraction_of_triad"] = benchmark::Counter(springs * 168.0 / std::max(g_triad_bytes_per_second, 1.0),
-                                                           benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["fraction_of_triad"] = benchmark::Counter(
+      springs * 168.0 / std::max(bench::triad_bytes_per_second(), 1.0), benchmark::Counter::kIsIterationInvariantRate);
 }
 
 void BM_Step(benchmark::State& state) {
-  Cylinder& c = cylinder(static_cast<int>(state.range(0)));
+  Cylinder& c = bench::cached<Cylinder>(static_cast<int>(state.range(0)));
   const auto integrator = static_cast<solve::Integrator>(state.range(1));
   solve::SimulatorOptions o;
   o.integrator = integrator;

@@ -13,8 +13,9 @@
 #include <hooke/model/problem.hpp>
 #include <hooke/solve/detail/reduce.hpp>
 #include <hooke/solve/sparse_cholesky.hpp>
-#include <map>
 #include <memory>
+
+#include "bench_common.hpp"
 
 namespace {
 
@@ -40,15 +41,8 @@ struct Setup {
   }
 };
 
-Setup& setup(int n) {
-  static std::map<int, std::unique_ptr<Setup>> cache;
-  auto& s = cache[n];
-  if (!s) s = std::make_unique<Setup>(n);
-  return *s;
-}
-
 void BM_Assembly(benchmark::State& state) {
-  Setup& s = setup(static_cast<int>(state.range(0)));
+  Setup& s = bench::cached<Setup>(static_cast<int>(state.range(0)));
   for (auto _ : state) {
     SparseMatrix k = s.model->hessian(s.model->rest_positions());
     benchmark::DoNotOptimize(k.valuePtr());
@@ -62,7 +56,7 @@ void BM_Assembly(benchmark::State& state) {
 }
 
 void BM_Factorization(benchmark::State& state) {
-  Setup& s = setup(static_cast<int>(state.range(0)));
+  Setup& s = bench::cached<Setup>(static_cast<int>(state.range(0)));
   const solve::detail::FreeMap map(model::free_dofs(s.problem), s.model->dof_count());
   const SparseMatrix k = map.restrict(s.model->hessian(s.model->rest_positions()));
   const VecX f = map.restrict(s.problem.external_force);
@@ -82,17 +76,7 @@ void BM_Factorization(benchmark::State& state) {
   state.counters["peak_rss_MB"] = peak_rss_mb();
 }
 
-// Memory-bandwidth baseline: a[i] = b[i] + s c[i] over 3 x 16 M doubles (384 MB moved per pass).
-void BM_StreamTriad(benchmark::State& state) {
-  const size_t n = 1 << 24;
-  std::vector<double> a(n, 0.0), b(n, 1.0), c(n, 2.0);
-  for (auto _ : state) {
-    for (size_t i = 0; i < n; ++i) a[i] = b[i] + 3.0 * c[i];
-    benchmark::DoNotOptimize(a.data());
-    benchmark::ClobberMemory();
-  }
-  state.SetBytesProcessed(static_cast<int64_t>(state.iterations()) * static_cast<int64_t>(3 * n * sizeof(double)));
-}
+void BM_StreamTriad(benchmark::State& state) { bench::run_triad(state); }
 
 }  // namespace
 
