@@ -106,6 +106,7 @@ int run_simulate(const SimulateCli& o) {
   const double e0 = sim.kinetic_energy() + sim.potential_energy();
   std::vector<double> ms;
   int not_converged = 0, beyond_dt = 0;
+  long iterations = 0;
   double max_probe = 0.0;
   for (int k = 1; k <= o.steps; ++k) {
     if (o.probe_node >= 0) {  // the probe ramps linearly to its offset or force over the run
@@ -123,6 +124,7 @@ int run_simulate(const SimulateCli& o) {
                           std::to_string(o.dt) + " s; explicit limit " + std::to_string(sim.stable_time_step()) +
                           " s)");
     not_converged += r.converged ? 0 : 1;
+    iterations += r.iterations;
     beyond_dt += r.beyond_stable_dt ? 1 : 0;
     if (r.probe_force.size() > 0) max_probe = std::max(max_probe, r.probe_force.norm());
     if (k % every == 0 || k == o.steps) write_frame(k);
@@ -134,7 +136,8 @@ int run_simulate(const SimulateCli& o) {
   const double e1 = sim.kinetic_energy() + sim.potential_energy();
   std::printf("hooke simulate: %s, %d nodes, %s model, %s, dt %.3g s, %d steps (%.4g s)\n", o.in.mesh_path.c_str(),
               m.node_count(), o.method.c_str(), o.integrator.c_str(), o.dt, o.steps, sim.time());
-  std::printf("  time      %.4g ms/step median, %.4g ms/step p95\n", percentile(ms, 0.5), percentile(ms, 0.95));
+  std::printf("  time      %.4g ms/step median, %.4g ms/step p95; %.3g solver iterations per step\n",
+              percentile(ms, 0.5), percentile(ms, 0.95), static_cast<double>(iterations) / o.steps);
   std::printf("  energy    %.6g J at start, %.6g J at end (kinetic %.6g J)\n", e0, e1, sim.kinetic_energy());
   if (o.probe_node >= 0) std::printf("  probe     max force on the device %.6g N\n", max_probe);
   if (beyond_dt > 0)
