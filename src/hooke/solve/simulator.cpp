@@ -301,6 +301,23 @@ struct Simulator::Impl {
     }
   }
 
+  // Local step of Liu et al. 2013: each spring's best direction d_s = l0_s (y_i - y_j) / |y_i - y_j|,
+  // accumulated as J d (k_s d_s added at i, subtracted at j). Fixed-size vectors: no allocation per spring.
+  template <int D>
+  void local_step(const VecX& y, VecX& jd) const {
+    jd.setZero();
+    for (size_t s = 0; s < springs.pairs.size(); ++s) {
+      const int i = springs.pairs[s][0], j = springs.pairs[s][1];
+      const Eigen::Matrix<double, D, 1> dij = y.segment<D>(D * i) - y.segment<D>(D * j);
+      const double len = dij.norm();
+      if (len == 0.0) continue;
+      const Eigen::Matrix<double, D, 1> ds =
+          (springs.k(static_cast<Eigen::Index>(s)) * springs.l0(static_cast<Eigen::Index>(s)) / len) * dij;
+      jd.segment<D>(D * i) += ds;
+      jd.segment<D>(D * j) -= ds;
+    }
+  }
+
   StepReport local_global_step(double dt) {
     const int d = model().dim();
     const Eigen::Index nd = x.size();
@@ -334,17 +351,10 @@ struct Simulator::Impl {
     if (damping.rows() > 0) rhs0 += damping * x_n / dt;
     VecX jd(nd);
     for (int it = 0; it < opt.local_global_iterations; ++it) {
-      jd.setZero();
-      for (size_t s = 0; s < springs.pairs.size(); ++s) {  // local step: the best direction of each spring
-        const int i = springs.pairs[s][0], j = springs.pairs[s][1];
-        const auto e = static_cast<Eigen::Index>(s);
-        const VecX dij = y.segment(d * i, d) - y.segment(d * j, d);
-        const double len = dij.norm();
-        if (len == 0.0) continue;
-        const VecX ds = springs.k(e) * springs.l0(e) / len * dij;
-        jd.segment(d * i, d) += ds;
-        jd.segment(d * j, d) -= ds;
-      }
+      if (d == 3)
+        local_step<3>(y, jd);
+      else
+        local_step<2>(y, jd);
       const VecX yf = lg_factor.solve(free.restrict(VecX(rhs0 + jd)));  // global step
       for (int i = 0; i < free.size(); ++i) y(free.free[static_cast<size_t>(i)]) = yf(i);
     }
