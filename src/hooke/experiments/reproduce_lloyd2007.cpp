@@ -83,6 +83,7 @@ class Runner {
   // A given spring model (a variant no method names).
   DeformationPanel run_model(const mesh::Mesh& m, const std::vector<material::Material>& mats,
                              const calibrate::SpringModel& springs, const Spec& s) {
+    // compare_model ignores the options' method; any valid name fills it.
     const Comparison r = compare_model(m, mats, springs, options(s, "stiffness-fit"));
     return add(m, m, s, r, [&](const std::string&) { return r; });
   }

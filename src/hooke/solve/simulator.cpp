@@ -102,12 +102,16 @@ struct Simulator::Impl {
     if (!probe.nodes.empty() && !probe.drive_position)
       for (int node : probe.nodes)
         f_total.segment(d * node, d) += probe.force / static_cast<double>(probe.nodes.size());
-    if (!probe.nodes.empty() && probe.drive_position) {
-      if (problem.prescribed_positions.size() != x.size()) problem.prescribed_positions = model().rest_positions();
-      for (size_t k = 0; k < probe.nodes.size(); ++k)
-        problem.prescribed_positions.segment(d * probe.nodes[k], d) =
-            grab_positions.segment(d * static_cast<Eigen::Index>(k), d) + probe.offset;
-    }
+  }
+
+  // A driving probe's nodes are fixed DOFs: their targets are grab position + offset.
+  void update_probe_targets() {
+    if (probe.nodes.empty() || !probe.drive_position) return;
+    const int d = model().dim();
+    if (problem.prescribed_positions.size() != x.size()) problem.prescribed_positions = model().rest_positions();
+    for (size_t k = 0; k < probe.nodes.size(); ++k)
+      problem.prescribed_positions.segment(d * probe.nodes[k], d) =
+          grab_positions.segment(d * static_cast<Eigen::Index>(k), d) + probe.offset;
   }
 
   VecX probe_force() {
@@ -139,13 +143,8 @@ struct Simulator::Impl {
     r.beyond_stable_dt = dt > stable_dt();
     VecX x_target = x;
     apply_prescribed(x_target);
-    if (verlet) {
-      v += 0.5 * dt * acceleration(v);
-      for (int i : free.free) x(i) += dt * v(i);
-    } else {
-      v += dt * acceleration(v);
-      for (int i : free.free) x(i) += dt * v(i);
-    }
+    v += (verlet ? 0.5 : 1.0) * dt * acceleration(v);  // (half) kick
+    for (int i : free.free) x(i) += dt * v(i);         // drift
     fixed_motion(x_target, dt);
     gradient_valid = false;
     if (verlet) v += 0.5 * dt * acceleration(v);
@@ -211,7 +210,8 @@ struct Simulator::Impl {
         free.restrict(f_total).norm() + free.restrict(objective_gradient(y, x_hat, w, dt)).norm() + 1e-30;
     double phi = objective(y, x_hat, w, dt);
     double previous = std::numeric_limits<double>::infinity();
-    for (int it = 0; it < opt.max_newton_iterations; ++it) {
+    int it = 0;
+    for (; it < opt.max_newton_iterations; ++it) {
       const VecX g = objective_gradient(y, x_hat, w, dt);
       const VecX gf = free.restrict(g);
       r.residual = gf.norm();
@@ -268,7 +268,7 @@ struct Simulator::Impl {
     }
     r.residual = free.restrict(objective_gradient(y, x_hat, w, dt)).norm();
     r.converged = r.residual <= opt.newton_tolerance * scale;
-    r.iterations = opt.max_newton_iterations;
+    r.iterations = it;  // the limit, or where the line search found no descent
     return r;
   }
 
@@ -423,6 +423,7 @@ Simulator& Simulator::operator=(Simulator&&) noexcept = default;
 StepReport Simulator::step(double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt)) throw InvalidArgument("the time step must be a positive number");
   m->update_loads();
+  m->update_probe_targets();
   StepReport r;
   switch (m->opt.integrator) {
     case Integrator::kSymplecticEuler: r = m->explicit_step(dt, false); break;
