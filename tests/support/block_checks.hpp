@@ -3,7 +3,7 @@
 // central differences of the gradient (STYLE.md, Tests).
 #include <gtest/gtest.h>
 
-#include <hooke/model/term_block.hpp>
+#include <hooke/model/hessian_assembly.hpp>
 #include <support/finite_difference.hpp>
 
 namespace hooke::test {
@@ -14,22 +14,18 @@ inline VecX block_gradient(const model::TermBlock& b, const VecX& x) {
   return g;
 }
 
-inline MatX block_hessian(const model::TermBlock& b, const VecX& x, bool project_psd = false) {
-  std::vector<Triplet> t;
-  b.add_hessian(x, t, project_psd);
-  SparseMatrix h(x.size(), x.size());
-  h.setFromTriplets(t.begin(), t.end());
-  return MatX(h);
+inline MatX block_hessian(const model::TermBlock& b, int dim, const VecX& x, bool project_psd = false) {
+  return MatX(model::block_hessian(b, dim, x, project_psd));
 }
 
-// Relative tolerance `tol` on both, finite-difference step h (m).
-inline void expect_derivatives_match_finite_differences(const model::TermBlock& b, const VecX& x, double h,
+// Relative tolerance `tol` on both, finite-difference step h (m); dim 2 or 3.
+inline void expect_derivatives_match_finite_differences(const model::TermBlock& b, int dim, const VecX& x, double h,
                                                         double tol) {
   const VecX g = block_gradient(b, x);
   const VecX g_fd = fd_gradient([&](const VecX& y) { return b.energy(y); }, x, h);
   EXPECT_LT((g - g_fd).norm(), tol * g.norm()) << b.name() << " gradient";
   const MatX h_fd = fd_jacobian([&](const VecX& y) { return block_gradient(b, y); }, x, h);
-  EXPECT_LT((block_hessian(b, x) - h_fd).norm(), tol * h_fd.norm()) << b.name() << " Hessian";
+  EXPECT_LT((block_hessian(b, dim, x) - h_fd).norm(), tol * h_fd.norm()) << b.name() << " Hessian";
 }
 
 }  // namespace hooke::test

@@ -92,6 +92,7 @@ ElasticBlock::ElasticBlock(const mesh::Mesh& mesh, const std::vector<material::M
     }
     m_first_point.push_back(static_cast<int>(m_weight.size()));
   }
+  m_schedule = ElementSchedule(m_elements);
 }
 
 // Calls fn(integral_constant<D>, integral_constant<N>) for the block's element kind.
@@ -125,34 +126,42 @@ bool ElasticBlock::element_terms(const Eigen::Ref<const VecX>& x, int e, double*
 }
 
 double ElasticBlock::energy(const Eigen::Ref<const VecX>& x) const {
-  double total = 0.0;
-  for (int e = 0; e < m_elements.rows(); ++e)
-    if (!element_terms(x, e, &total, nullptr, nullptr)) return std::numeric_limits<double>::infinity();
-  return total;
+  return m_schedule.sum([&](int e) {
+    double energy = 0.0;
+    return element_terms(x, e, &energy, nullptr, nullptr) ? energy : std::numeric_limits<double>::infinity();
+  });
 }
 
 void ElasticBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
-  VecX g;
-  for (int e = 0; e < m_elements.rows(); ++e) {
-    element_terms(x, e, nullptr, &g, nullptr);
-    for (int a = 0; a < m_npe; ++a)
-      for (int i = 0; i < m_dim; ++i) gradient(m_dim * m_elements(e, a) + i) += g(m_dim * a + i);
-  }
+  dispatch(m_kind, [&](auto d, auto n) {
+    constexpr int D = decltype(d)::value, N = decltype(n)::value;
+    m_schedule.for_each_chunk([&](std::span<const int> elements, int) {
+      for (int e : elements) {
+        detail::ElementVector<D, N> g = detail::ElementVector<D, N>::Zero();
+        const auto se = static_cast<size_t>(e);
+        evaluate<D, N>(m_first_point, m_weight, m_grad, m_law[se], m_lame[se], gather<D, N>(x, m_elements, e), e,
+                       nullptr, &g, nullptr);
+        for (int a = 0; a < N; ++a) gradient.segment<D>(D * m_elements(e, a)) += g.template segment<D>(D * a);
+      }
+    });
+  });
 }
 
-void ElasticBlock::add_hessian(const Eigen::Ref<const VecX>& x, std::vector<Triplet>& triplets,
-                               bool project_psd) const {
-  const int m = m_dim * m_npe;
-  triplets.reserve(triplets.size() + static_cast<size_t>(m_elements.rows()) * m * m);
-  MatX h;
-  for (int e = 0; e < m_elements.rows(); ++e) {
-    element_terms(x, e, nullptr, nullptr, &h);
-    if (project_psd) hooke::detail::project_to_psd(h);
-    for (int a = 0; a < m; ++a)
-      for (int b = 0; b < m; ++b)
-        triplets.emplace_back(m_dim * m_elements(e, a / m_dim) + a % m_dim,
-                              m_dim * m_elements(e, b / m_dim) + b % m_dim, h(a, b));
-  }
+void ElasticBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter,
+                                      double* values, bool project_psd) const {
+  dispatch(m_kind, [&](auto d, auto n) {
+    constexpr int D = decltype(d)::value, N = decltype(n)::value;
+    m_schedule.for_each_chunk([&](std::span<const int> elements, int) {
+      for (int e : elements) {
+        detail::ElementMatrix<D, N> h = detail::ElementMatrix<D, N>::Zero();
+        const auto se = static_cast<size_t>(e);
+        evaluate<D, N>(m_first_point, m_weight, m_grad, m_law[se], m_lame[se], gather<D, N>(x, m_elements, e), e,
+                       nullptr, nullptr, &h);
+        if (project_psd) hooke::detail::project_to_psd(h);
+        scatter.add<D, N>(e, h, values);
+      }
+    });
+  });
 }
 
 void ElasticBlock::element_derivatives(const Eigen::Ref<const VecX>& x, int e, double& energy, VecX& gradient,

@@ -1,5 +1,6 @@
 #pragma once
 /// FEM term block: all elements of a triangle, quad or tet mesh with a hyperelastic law.
+#include <hooke/core/element_schedule.hpp>
 #include <hooke/material/material.hpp>
 #include <hooke/mesh/mesh.hpp>
 #include <hooke/model/term_block.hpp>
@@ -24,7 +25,9 @@ class ElasticBlock final : public model::TermBlock {
   std::string_view name() const override { return "fem"; }
   double energy(const Eigen::Ref<const VecX>& x) const override;
   void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const override;
-  void add_hessian(const Eigen::Ref<const VecX>& x, std::vector<Triplet>& triplets, bool project_psd) const override;
+  RowMatXi element_nodes() const override { return m_elements; }
+  void add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter, double* values,
+                          bool project_psd) const override;
 
   /// Energy (J), gradient (N, size dim*npe) and Hessian (N/m) of element `e` alone at x.
   void element_derivatives(const Eigen::Ref<const VecX>& x, int e, double& energy, VecX& gradient, MatX& hessian) const;
@@ -43,6 +46,7 @@ class ElasticBlock final : public model::TermBlock {
   std::vector<int> m_first_point;      // per element + 1: range of its quadrature points
   std::vector<double> m_weight;        // per quadrature point: reference measure (m^3, or m^2 * t)
   std::vector<double> m_grad;          // per quadrature point: npe x dim dN/dX, row-major
+  ElementSchedule m_schedule;
 };
 
 /// Convenience: one material for every element.

@@ -1,4 +1,5 @@
 #include <hooke/core/error.hpp>
+#include <hooke/model/hessian_assembly.hpp>
 #include <hooke/model/model.hpp>
 
 namespace hooke::model {
@@ -23,11 +24,9 @@ VecX Model::gradient(const Eigen::Ref<const VecX>& x) const {
 }
 
 SparseMatrix Model::hessian(const Eigen::Ref<const VecX>& x, bool project_psd) const {
-  std::vector<Triplet> triplets;
-  for (const auto& b : m_blocks) b->add_hessian(x, triplets, project_psd);
-  SparseMatrix h(x.size(), x.size());
-  h.setFromTriplets(triplets.begin(), triplets.end());
-  return h;
+  HessianAssembly assembly(*this);
+  assembly.assemble(x, project_psd);
+  return assembly.matrix();
 }
 
 }  // namespace hooke::model

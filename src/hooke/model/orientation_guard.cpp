@@ -8,25 +8,25 @@ namespace hooke::model {
 OrientationGuard::OrientationGuard(const mesh::Mesh& mesh) : m_kind(mesh.kind), m_elements(mesh.elements) {
   if (mesh.kind == mesh::ElementKind::kSurfaceTriangle)
     throw InvalidArgument("OrientationGuard needs a planar or tet mesh");
+  m_schedule = ElementSchedule(m_elements);
 }
 
 double OrientationGuard::energy(const Eigen::Ref<const VecX>& x) const {
   const double inf = std::numeric_limits<double>::infinity();
-  for (int e = 0; e < m_elements.rows(); ++e) {
+  return m_schedule.sum([&](int e) {
     const auto v = m_elements.row(e);
-    if (m_kind == mesh::ElementKind::kTet) {
-      if (!(mesh::signed_volume(x.segment<3>(3 * v(0)), x.segment<3>(3 * v(1)), x.segment<3>(3 * v(2)),
-                                x.segment<3>(3 * v(3))) > 0.0))
-        return inf;
-    } else {
-      const int n = static_cast<int>(m_elements.cols());
-      for (int k = 0; k < (n == 3 ? 1 : 4); ++k) {
-        const int a = v((k + n - 1) % n), b = v(k), c = v((k + 1) % n);
-        if (!(mesh::signed_area(x.segment<2>(2 * a), x.segment<2>(2 * b), x.segment<2>(2 * c)) > 0.0)) return inf;
-      }
+    if (m_kind == mesh::ElementKind::kTet)
+      return mesh::signed_volume(x.segment<3>(3 * v(0)), x.segment<3>(3 * v(1)), x.segment<3>(3 * v(2)),
+                                 x.segment<3>(3 * v(3))) > 0.0
+                 ? 0.0
+                 : inf;
+    const int n = static_cast<int>(m_elements.cols());
+    for (int k = 0; k < (n == 3 ? 1 : 4); ++k) {
+      const int a = v((k + n - 1) % n), b = v(k), c = v((k + 1) % n);
+      if (!(mesh::signed_area(x.segment<2>(2 * a), x.segment<2>(2 * b), x.segment<2>(2 * c)) > 0.0)) return inf;
     }
-  }
-  return 0.0;
+    return 0.0;
+  });
 }
 
 }  // namespace hooke::model

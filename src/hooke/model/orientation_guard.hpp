@@ -1,6 +1,7 @@
 #pragma once
 /// A term with no energy that makes inverted states inadmissible for models without elements of their own
 /// (spring models): energy() is +infinity when any element of the mesh has non-positive signed measure.
+#include <hooke/core/element_schedule.hpp>
 #include <hooke/mesh/mesh.hpp>
 #include <hooke/model/term_block.hpp>
 
@@ -15,11 +16,13 @@ class OrientationGuard final : public TermBlock {
   /// 0 J, or +infinity where an element is inverted (signed area / volume <= 0; each quad as its 4 corner triangles).
   double energy(const Eigen::Ref<const VecX>& x) const override;
   void add_gradient(const Eigen::Ref<const VecX>&, Eigen::Ref<VecX>) const override {}
-  void add_hessian(const Eigen::Ref<const VecX>&, std::vector<Triplet>&, bool) const override {}
+  RowMatXi element_nodes() const override { return {}; }
+  void add_hessian_values(const Eigen::Ref<const VecX>&, const HessianScatter&, double*, bool) const override {}
 
  private:
   mesh::ElementKind m_kind;
   RowMatXi m_elements;
+  ElementSchedule m_schedule;
 };
 
 }  // namespace hooke::model

@@ -1,13 +1,14 @@
 #pragma once
 /// One batch of energy terms of a model (all FEM elements, all springs, ...), evaluated in one call.
 #include <hooke/core/types.hpp>
+#include <hooke/model/hessian_scatter.hpp>
 #include <string_view>
-#include <vector>
 
 namespace hooke::model {
 
 /// Interface of a term block. Positions x are flat and node-major: x[dim * node + axis], m.
-/// One virtual call per block and evaluation, never per element.
+/// One virtual call per block and evaluation, never per element. energy, add_gradient and add_hessian_values
+/// allocate nothing (the real-time loop of solve::Simulator relies on it).
 class TermBlock {
  public:
   virtual ~TermBlock() = default;
@@ -17,9 +18,14 @@ class TermBlock {
   virtual double energy(const Eigen::Ref<const VecX>& x) const = 0;
   /// Adds dE/dx at x (N) to `gradient` (same size as x).
   virtual void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const = 0;
-  /// Appends the entries of d2E/dx2 at x (N/m) to `triplets` (duplicates are summed on assembly).
+  /// #elements x nodes-per-element node indices of the elements whose Hessians the block adds (0 x 0 when its
+  /// Hessian is zero). Fixes the sparsity pattern.
+  virtual RowMatXi element_nodes() const = 0;
+  /// Adds d2E/dx2 at x (N/m) into `values`, the value array of a matrix whose pattern contains the elements'
+  /// node pairs, at the places `scatter` (built from element_nodes()) gives.
   /// @param project_psd  project each element's Hessian to positive semi-definite first
-  virtual void add_hessian(const Eigen::Ref<const VecX>& x, std::vector<Triplet>& triplets, bool project_psd) const = 0;
+  virtual void add_hessian_values(const Eigen::Ref<const VecX>& x, const HessianScatter& scatter, double* values,
+                                  bool project_psd) const = 0;
 };
 
 }  // namespace hooke::model

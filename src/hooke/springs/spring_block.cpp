@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/springs/spring_block.hpp>
@@ -40,49 +41,76 @@ SpringBlock::SpringBlock(int dim, std::vector<std::array<int, 2>> pairs, VecX st
     if (m_pairs[static_cast<size_t>(s)][0] == m_pairs[static_cast<size_t>(s)][1])
       throw InvalidArgument("spring " + std::to_string(s) + " connects a node to itself");
   }
+  m_schedule = ElementSchedule(element_nodes());
 }
 
 double SpringBlock::energy(const Eigen::Ref<const VecX>& x) const {
-  double e = 0.0;
-  for (size_t s = 0; s < m_pairs.size(); ++s) {
-    const auto [i, j] = m_pairs[s];
-    const double l = (x.segment(m_dim * i, m_dim) - x.segment(m_dim * j, m_dim)).norm();
-    const double stretch = l - m_rest_length(static_cast<Eigen::Index>(s));
-    e += 0.5 * m_stiffness(static_cast<Eigen::Index>(s)) * stretch * stretch;
-  }
-  return e;
+  return m_schedule.sum([&](int s) {
+    const auto [i, j] = m_pairs[static_cast<size_t>(s)];
+    const double stretch = (x.segment(m_dim * i, m_dim) - x.segment(m_dim * j, m_dim)).norm() - m_rest_length(s);
+    return 0.5 * m_stiffness(s) * stretch * stretch;
+  });
 }
+
+namespace {
+
+// k (1 - l0/l) d: dE/dp_i of one spring with d = p_i - p_j, l = |d| (fixed size: no allocation).
+template <int D>
+void add_spring_gradients(const std::vector<std::array<int, 2>>& pairs, const VecX& stiffness, const VecX& rest,
+                          std::span<const int> springs, const double* x, double* gradient) {
+  using Vec = Eigen::Matrix<double, D, 1>;
+  for (int s : springs) {
+    const auto [i, j] = pairs[static_cast<size_t>(s)];
+    const Vec d = Vec::Map(x + D * i) - Vec::Map(x + D * j);
+    const Vec g = (stiffness(s) * (1.0 - rest(s) / d.norm())) * d;
+    Vec::Map(gradient + D * i) += g;
+    Vec::Map(gradient + D * j) -= g;
+  }
+}
+
+template <int D>
+void add_spring_hessians(const std::vector<std::array<int, 2>>& pairs, const VecX& stiffness, const VecX& rest,
+                         std::span<const int> springs, const double* x, const model::HessianScatter& scatter,
+                         double* values, bool project_psd) {
+  using Vec = Eigen::Matrix<double, D, 1>;
+  using Block = Eigen::Matrix<double, D, D>;
+  Eigen::Matrix<double, 2 * D, 2 * D> h;
+  for (int s : springs) {
+    const auto [i, j] = pairs[static_cast<size_t>(s)];
+    const Vec d = Vec::Map(x + D * i) - Vec::Map(x + D * j);
+    const double l = d.norm(), ratio = rest(s) / l;
+    const double iso = project_psd ? std::max(0.0, 1.0 - ratio) : 1.0 - ratio;
+    const Block a = stiffness(s) * (iso * Block::Identity() + (ratio / (l * l)) * d * d.transpose());
+    h << a, -a, -a, a;
+    scatter.add<D, 2>(s, h, values);
+  }
+}
+
+}  // namespace
 
 void SpringBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
-  for (size_t s = 0; s < m_pairs.size(); ++s) {
-    const auto [i, j] = m_pairs[s];
-    const VecX d = x.segment(m_dim * i, m_dim) - x.segment(m_dim * j, m_dim);
-    const double l = d.norm();
-    const auto si = static_cast<Eigen::Index>(s);
-    const VecX g = m_stiffness(si) * (1.0 - m_rest_length(si) / l) * d;
-    gradient.segment(m_dim * i, m_dim) += g;
-    gradient.segment(m_dim * j, m_dim) -= g;
-  }
+  m_schedule.for_each_chunk([&](std::span<const int> springs, int) {
+    if (m_dim == 3)
+      add_spring_gradients<3>(m_pairs, m_stiffness, m_rest_length, springs, x.data(), gradient.data());
+    else
+      add_spring_gradients<2>(m_pairs, m_stiffness, m_rest_length, springs, x.data(), gradient.data());
+  });
 }
 
-void SpringBlock::add_hessian(const Eigen::Ref<const VecX>& x, std::vector<Triplet>& triplets, bool project_psd) const {
-  triplets.reserve(triplets.size() + m_pairs.size() * 4 * m_dim * m_dim);
-  for (size_t s = 0; s < m_pairs.size(); ++s) {
-    const auto [i, j] = m_pairs[s];
-    const VecX d = x.segment(m_dim * i, m_dim) - x.segment(m_dim * j, m_dim);
-    const double l = d.norm();
-    const auto si = static_cast<Eigen::Index>(s);
-    const double k = m_stiffness(si), ratio = m_rest_length(si) / l;
-    const double iso = project_psd ? std::max(0.0, 1.0 - ratio) : 1.0 - ratio;
-    for (int a = 0; a < m_dim; ++a)
-      for (int b = 0; b < m_dim; ++b) {
-        const double v = k * ((a == b ? iso : 0.0) + ratio * d(a) * d(b) / (l * l));
-        triplets.emplace_back(m_dim * i + a, m_dim * i + b, v);
-        triplets.emplace_back(m_dim * j + a, m_dim * j + b, v);
-        triplets.emplace_back(m_dim * i + a, m_dim * j + b, -v);
-        triplets.emplace_back(m_dim * j + a, m_dim * i + b, -v);
-      }
-  }
+RowMatXi SpringBlock::element_nodes() const {
+  RowMatXi nodes(static_cast<Eigen::Index>(m_pairs.size()), 2);
+  for (size_t s = 0; s < m_pairs.size(); ++s) nodes.row(static_cast<Eigen::Index>(s)) << m_pairs[s][0], m_pairs[s][1];
+  return nodes;
+}
+
+void SpringBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter,
+                                     double* values, bool project_psd) const {
+  m_schedule.for_each_chunk([&](std::span<const int> springs, int) {
+    if (m_dim == 3)
+      add_spring_hessians<3>(m_pairs, m_stiffness, m_rest_length, springs, x.data(), scatter, values, project_psd);
+    else
+      add_spring_hessians<2>(m_pairs, m_stiffness, m_rest_length, springs, x.data(), scatter, values, project_psd);
+  });
 }
 
 }  // namespace hooke::springs

@@ -1,6 +1,7 @@
 #pragma once
 /// Linear (Hookean) springs between node pairs, with optional prestrained rest lengths (Lloyd et al. 2007).
 #include <array>
+#include <hooke/core/element_schedule.hpp>
 #include <hooke/model/term_block.hpp>
 #include <vector>
 
@@ -33,10 +34,13 @@ class SpringBlock final : public model::TermBlock {
   std::string_view name() const override { return "springs"; }
   double energy(const Eigen::Ref<const VecX>& x) const override;
   void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const override;
+  RowMatXi element_nodes() const override;
   /// With project_psd, the isotropic term k (1 - l0/l) I of a compressed spring (l < l0) is dropped, which
   /// leaves the closest positive semi-definite block of this form.
-  void add_hessian(const Eigen::Ref<const VecX>& x, std::vector<Triplet>& triplets, bool project_psd) const override;
+  void add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter, double* values,
+                          bool project_psd) const override;
 
+  int dim() const { return m_dim; }
   const std::vector<std::array<int, 2>>& pairs() const { return m_pairs; }
   const VecX& stiffness() const { return m_stiffness; }
   const VecX& rest_length() const { return m_rest_length; }
@@ -46,6 +50,7 @@ class SpringBlock final : public model::TermBlock {
   std::vector<std::array<int, 2>> m_pairs;
   VecX m_stiffness;
   VecX m_rest_length;
+  ElementSchedule m_schedule;
 };
 
 }  // namespace hooke::springs

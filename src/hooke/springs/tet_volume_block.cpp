@@ -69,40 +69,40 @@ TetVolumeBlock::TetVolumeBlock(RowMatXi tets, VecX stiffness, VecX rest_volume)
   for (Eigen::Index t = 0; t < m_tets.rows(); ++t)
     if (!(m_stiffness(t) >= 0.0) || !(m_rest_volume(t) > 0.0))
       throw InvalidArgument("tet " + std::to_string(t) + " has a negative k_V or a non-positive rest volume");
+  m_schedule = ElementSchedule(m_tets);
 }
 
 double TetVolumeBlock::energy(const Eigen::Ref<const VecX>& x) const {
-  double e = 0.0;
-  for (int t = 0; t < m_tets.rows(); ++t) {
+  return m_schedule.sum([&](int t) {
     const double c = volume(corners(x, m_tets, t)) - m_rest_volume(t);
-    e += 0.5 * m_stiffness(t) * c * c / (m_rest_volume(t) * m_rest_volume(t));
-  }
-  return e;
+    return 0.5 * m_stiffness(t) * c * c / (m_rest_volume(t) * m_rest_volume(t));
+  });
 }
 
 void TetVolumeBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
-  for (int t = 0; t < m_tets.rows(); ++t) {
-    const Mat34 p = corners(x, m_tets, t);
-    const double v0 = m_rest_volume(t);
-    const Mat34 g = m_stiffness(t) * (volume(p) - v0) / (v0 * v0) * tet_volume_gradient(p);
-    for (int a = 0; a < 4; ++a) gradient.segment<3>(3 * m_tets(t, a)) += g.col(a);
-  }
+  m_schedule.for_each_chunk([&](std::span<const int> tets, int) {
+    for (int t : tets) {
+      const Mat34 p = corners(x, m_tets, t);
+      const double v0 = m_rest_volume(t);
+      const Mat34 g = m_stiffness(t) * (volume(p) - v0) / (v0 * v0) * tet_volume_gradient(p);
+      for (int a = 0; a < 4; ++a) gradient.segment<3>(3 * m_tets(t, a)) += g.col(a);
+    }
+  });
 }
 
-void TetVolumeBlock::add_hessian(const Eigen::Ref<const VecX>& x, std::vector<Triplet>& triplets,
-                                 bool project_psd) const {
-  triplets.reserve(triplets.size() + static_cast<size_t>(m_tets.rows()) * 144);
-  for (int t = 0; t < m_tets.rows(); ++t) {
-    const Mat34 p = corners(x, m_tets, t);
-    const double v0 = m_rest_volume(t), scale = m_stiffness(t) / (v0 * v0);
-    const Mat34 grad = tet_volume_gradient(p);
-    const Eigen::Map<const Eigen::Matrix<double, 12, 1>> g(grad.data());
-    Mat12 h = scale * (g * g.transpose() + (volume(p) - v0) * volume_hessian(p));
-    if (project_psd) hooke::detail::project_to_psd(h);
-    for (int a = 0; a < 12; ++a)
-      for (int b = 0; b < 12; ++b)
-        triplets.emplace_back(3 * m_tets(t, a / 3) + a % 3, 3 * m_tets(t, b / 3) + b % 3, h(a, b));
-  }
+void TetVolumeBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter,
+                                        double* values, bool project_psd) const {
+  m_schedule.for_each_chunk([&](std::span<const int> tets, int) {
+    for (int t : tets) {
+      const Mat34 p = corners(x, m_tets, t);
+      const double v0 = m_rest_volume(t), scale = m_stiffness(t) / (v0 * v0);
+      const Mat34 grad = tet_volume_gradient(p);
+      const Eigen::Map<const Eigen::Matrix<double, 12, 1>> g(grad.data());
+      Mat12 h = scale * (g * g.transpose() + (volume(p) - v0) * volume_hessian(p));
+      if (project_psd) hooke::detail::project_to_psd(h);
+      scatter.add<3, 4>(t, h, values);
+    }
+  });
 }
 
 }  // namespace hooke::springs
