@@ -18,9 +18,14 @@ double Model::energy(const Eigen::Ref<const VecX>& x) const {
 }
 
 VecX Model::gradient(const Eigen::Ref<const VecX>& x) const {
-  VecX g = VecX::Zero(x.size());
-  for (const auto& b : m_blocks) b->add_gradient(x, g);
+  VecX g(x.size());
+  gradient(x, g);
   return g;
+}
+
+void Model::gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
+  gradient.setZero();
+  for (const auto& b : m_blocks) b->add_gradient(x, gradient);
 }
 
 SparseMatrix Model::hessian(const Eigen::Ref<const VecX>& x, bool project_psd) const {

@@ -27,6 +27,8 @@ class Model {
   double energy(const Eigen::Ref<const VecX>& x) const;
   /// dE/dx at x, N.
   VecX gradient(const Eigen::Ref<const VecX>& x) const;
+  /// Writes dE/dx at x (N) into `gradient` (size dof_count); allocates nothing.
+  void gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const;
   /// d2E/dx2 at x, N/m, assembled (dof_count x dof_count, symmetric).
   SparseMatrix hessian(const Eigen::Ref<const VecX>& x, bool project_psd = false) const;
 

@@ -1,7 +1,6 @@
-#include <Eigen/IterativeLinearSolvers>
 #include <cmath>
 #include <hooke/core/error.hpp>
-#include <hooke/solve/detail/reduce.hpp>
+#include <hooke/model/hessian_assembly.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <hooke/solve/sparse_cholesky.hpp>
 #include <hooke/springs/spring_block.hpp>
@@ -14,18 +13,34 @@ namespace {
 constexpr std::string_view kNames[] = {"symplectic-euler", "velocity-verlet", "implicit-euler", "local-global",
                                        "quasi-static"};
 
-std::vector<int> unfixed(const model::Problem& p) {
-  std::vector<int> free;
-  for (size_t i = 0; i < p.fixed_dofs.size(); ++i)
-    if (!p.fixed_dofs[i]) free.push_back(static_cast<int>(i));
-  return free;
+// out = A z for a symmetric matrix stored whole in compressed columns (allocation-free).
+void multiply(const SparseMatrix& a, const VecX& z, VecX& out) {
+  out.setZero();
+  for (int c = 0; c < a.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(a, c); it; ++it) out(it.row()) += it.value() * z(c);
+}
+
+// out += A z for A acting on r interleaved components per row (a per-node matrix on flat node-major vectors).
+void add_product(const SparseMatrix& a, const VecX& z, int r, VecX& out) {
+  for (int c = 0; c < a.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(a, c); it; ++it)
+      for (int k = 0; k < r; ++k) out(r * it.row() + k) += it.value() * z(r * c + k);
+}
+
+// Replaces the rows and columns of fixed unknowns by those of the identity; unknown u is fixed when
+// fixed[stride * u] (stride = components per unknown of the fixed-DOF flags).
+void constrain(SparseMatrix& a, const std::vector<char>& fixed, int stride) {
+  for (int c = 0; c < a.outerSize(); ++c) {
+    const bool column_fixed = fixed[static_cast<size_t>(stride * c)];
+    for (SparseMatrix::InnerIterator it(a, c); it; ++it)
+      if (column_fixed || fixed[static_cast<size_t>(stride * it.row())]) it.valueRef() = it.row() == c ? 1.0 : 0.0;
+  }
 }
 
 // Liu et al. 2013: the spring part of the incremental potential as min over directions d_s, |d_s| = l0_s, of
 // sum_s k_s/2 |x_i - x_j - d_s|^2, which makes the global step one constant linear system.
 struct Springs {
-  std::vector<std::array<int, 2>> pairs;
-  VecX k, l0;
+  std::vector<const springs::SpringBlock*> blocks;
 };
 
 }  // namespace
@@ -49,56 +64,85 @@ struct Simulator::Impl {
   model::Problem problem;
   Dynamics dyn;
   SimulatorOptions opt;
-  detail::FreeMap free;
-  VecX x, v, x_n, f_total, elastic_gradient;
-  bool gradient_valid = false;
+  Eigen::Index nd = 0;
+  // State and work vectors, sized once (step() allocates nothing after the first call).
+  VecX x, v, x_n, x_hat, y, trial, grad, delta, rhs, f_total, acc, damp_in, damp_out;
+  bool gradient_valid = false;  // grad holds dE/dx at x (explicit steps)
   double time_s = 0.0;
-  SparseMatrix k0, damping;  // K at rest; D = alpha M + beta K0 (full DOFs), empty when undamped
+  std::unique_ptr<model::HessianAssembly> assembly;  // fixed-pattern Hessian (implicit steps, K0)
+  SparseMatrix k0;                                   // Hessian at rest on the assembly's pattern
   SparseCholesky cholesky;
   bool have_factor = false;  // `cholesky` holds a factorisation of an earlier Newton matrix
   double factor_w = -1.0, factor_dt = -1.0;
-  VecX cg_guess;
-  Springs springs;    // local-global only
-  SparseMatrix lg_a;  // M/dt^2 + D/dt + L, full DOFs
-  SparseCholesky lg_factor;
+  VecX cg_r, cg_z, cg_p, cg_q, cg_inv_diag;
+  Springs springs;           // local-global only
+  int lg_components = 1;     // 1: the system acts on DOFs; dim: one per-node matrix for all axes (Kronecker)
+  SparseMatrix lg_a;         // M/dt^2 + D/dt + L, unconstrained
+  SparseCholesky lg_factor;  // of lg_a with the fixed unknowns' rows and columns replaced by the identity's
   double lg_dt = -1.0;
+  VecX lg_rhs0, lg_jd;
   Probe probe;
   VecX grab_positions;           // positions of the probe nodes' DOFs when grabbed
   std::vector<char> base_fixed;  // fixed DOFs of the problem without the probe
+  double stable_dt_cache = -1.0;
 
-  // Rebuilds the free-DOF map after the fixed set changed; factorisations are redone on their next use.
+  Impl(model::Problem p, Dynamics d, SimulatorOptions o)
+      : problem(std::move(p)), dyn(std::move(d)), opt(o), nd(problem.model->dof_count()) {
+    for (VecX* w : {&x, &v, &x_n, &x_hat, &y, &trial, &grad, &delta, &rhs, &f_total, &acc, &damp_in, &damp_out})
+      w->setZero(nd);
+  }
+
+  const model::Model& model() const { return *problem.model; }
+  bool fixed(Eigen::Index i) const { return problem.fixed_dofs[static_cast<size_t>(i)] != 0; }
+  bool damped() const { return dyn.mass_damping > 0.0 || dyn.stiffness_damping > 0.0; }
+
+  // After the fixed set changed: factorisations are redone on their next use (the patterns stay).
   void refix() {
-    free = detail::FreeMap(unfixed(problem), model().dof_count());
     lg_dt = -1.0;
     have_factor = false;
-    cg_guess.resize(0);
+    cg_r.resize(0);
     stable_dt_cache = -1.0;
   }
 
-  Impl(model::Problem p, Dynamics d, SimulatorOptions o)
-      : problem(std::move(p)), dyn(std::move(d)), opt(o), free(unfixed(problem), problem.model->dof_count()) {}
-
-  const model::Model& model() const { return *problem.model; }
+  model::HessianAssembly& hessian_assembly() {
+    if (!assembly) assembly = std::make_unique<model::HessianAssembly>(model());
+    return *assembly;
+  }
 
   const SparseMatrix& rest_stiffness() {
-    if (k0.rows() == 0) k0 = model().hessian(model().rest_positions());
+    if (k0.rows() == 0) {
+      hessian_assembly().assemble(model().rest_positions(), false);
+      k0 = assembly->matrix();
+    }
     return k0;
   }
 
+  // out = D z = alpha M z + beta K0 z.
+  void damping_product(const VecX& z, VecX& out) {
+    if (dyn.stiffness_damping > 0.0) {
+      multiply(rest_stiffness(), z, out);
+      out *= dyn.stiffness_damping;
+    } else {
+      out.setZero();
+    }
+    if (dyn.mass_damping > 0.0) out += dyn.mass_damping * dyn.mass.cwiseProduct(z);
+  }
+
   // Positions of the fixed DOFs now (prescribed, else rest).
-  void apply_prescribed(VecX& y) const {
-    const bool given = problem.prescribed_positions.size() == y.size();
-    for (size_t i = 0; i < problem.fixed_dofs.size(); ++i)
-      if (problem.fixed_dofs[i])
-        y(static_cast<Eigen::Index>(i)) = given ? problem.prescribed_positions(static_cast<Eigen::Index>(i))
-                                                : model().rest_positions()(static_cast<Eigen::Index>(i));
+  void apply_prescribed(VecX& z) const {
+    const bool given = problem.prescribed_positions.size() == z.size();
+    for (Eigen::Index i = 0; i < nd; ++i)
+      if (fixed(i)) z(i) = given ? problem.prescribed_positions(i) : model().rest_positions()(i);
   }
 
   void update_loads() {
-    f_total = problem.external_force.size() == x.size() ? problem.external_force : VecX::Zero(x.size());
+    if (problem.external_force.size() == nd)
+      f_total = problem.external_force;
+    else
+      f_total.setZero();
     const int d = model().dim();
     if (dyn.gravity.size() == d)
-      for (Eigen::Index i = 0; i < x.size(); ++i) f_total(i) += dyn.mass(i) * dyn.gravity(i % d);
+      for (Eigen::Index i = 0; i < nd; ++i) f_total(i) += dyn.mass(i) * dyn.gravity(i % d);
     if (!probe.nodes.empty() && !probe.drive_position)
       for (int node : probe.nodes)
         f_total.segment(d * node, d) += probe.force / static_cast<double>(probe.nodes.size());
@@ -108,145 +152,214 @@ struct Simulator::Impl {
   void update_probe_targets() {
     if (probe.nodes.empty() || !probe.drive_position) return;
     const int d = model().dim();
-    if (problem.prescribed_positions.size() != x.size()) problem.prescribed_positions = model().rest_positions();
+    if (problem.prescribed_positions.size() != nd) problem.prescribed_positions = model().rest_positions();
     for (size_t k = 0; k < probe.nodes.size(); ++k)
       problem.prescribed_positions.segment(d * probe.nodes[k], d) =
           grab_positions.segment(d * static_cast<Eigen::Index>(k), d) + probe.offset;
   }
 
-  VecX probe_force() {
+  void add_probe_force(StepReport& r) {
     const int d = model().dim();
-    VecX out = VecX::Zero(d);
-    if (probe.nodes.empty()) return out;
-    if (!probe.drive_position) return -probe.force;
-    const VecX g = model().gradient(x) - f_total;
-    for (int node : probe.nodes) out -= g.segment(d * node, d);
-    return out;
+    r.probe_force.setZero(d);
+    if (probe.nodes.empty()) return;
+    if (!probe.drive_position) {
+      r.probe_force = -probe.force;
+      return;
+    }
+    model().gradient(x, grad);  // at the new x: also the next explicit step's gradient
+    gradient_valid = true;
+    for (int node : probe.nodes) r.probe_force -= grad.segment(d * node, d) - f_total.segment(d * node, d);
   }
 
-  // Acceleration on the free DOFs (zero on fixed), from the elastic gradient at x and velocity w.
-  VecX acceleration(const VecX& w) {
+  // acc = M^-1 (f - dE/dx(x) - D w) on the free DOFs, 0 on the fixed ones.
+  void acceleration(const VecX& w) {
     if (!gradient_valid) {
-      elastic_gradient = model().gradient(x);
+      model().gradient(x, grad);
       gradient_valid = true;
     }
-    VecX f = f_total - elastic_gradient;
-    if (dyn.mass_damping > 0.0) f -= dyn.mass_damping * dyn.mass.cwiseProduct(w);
-    if (dyn.stiffness_damping > 0.0) f -= dyn.stiffness_damping * (rest_stiffness() * w);
-    VecX a = VecX::Zero(x.size());
-    for (int i : free.free) a(i) = f(i) / dyn.mass(i);
-    return a;
+    acc = f_total - grad;
+    if (damped()) {
+      damping_product(w, damp_out);
+      acc -= damp_out;
+    }
+    for (Eigen::Index i = 0; i < nd; ++i) acc(i) = fixed(i) ? 0.0 : acc(i) / dyn.mass(i);
   }
 
   StepReport explicit_step(double dt, bool verlet) {
     StepReport r;
     r.beyond_stable_dt = dt > stable_dt();
-    VecX x_target = x;
-    apply_prescribed(x_target);
-    v += (verlet ? 0.5 : 1.0) * dt * acceleration(v);  // (half) kick
-    for (int i : free.free) x(i) += dt * v(i);         // drift
-    fixed_motion(x_target, dt);
+    x_hat = x;
+    apply_prescribed(x_hat);  // targets of the fixed DOFs
+    acceleration(v);
+    v += (verlet ? 0.5 : 1.0) * dt * acc;  // (half) kick
+    for (Eigen::Index i = 0; i < nd; ++i)  // drift; fixed DOFs move to their targets
+      if (fixed(i)) {
+        v(i) = (x_hat(i) - x(i)) / dt;
+        x(i) = x_hat(i);
+      } else {
+        x(i) += dt * v(i);
+      }
     gradient_valid = false;
-    if (verlet) v += 0.5 * dt * acceleration(v);
+    if (verlet) {
+      acceleration(v);
+      v += 0.5 * dt * acc;
+    }
     return r;
   }
 
-  // Moves the fixed DOFs to their targets, with velocity (target - old) / dt.
-  void fixed_motion(const VecX& target, double dt) {
-    for (size_t i = 0; i < problem.fixed_dofs.size(); ++i)
-      if (problem.fixed_dofs[i]) {
-        const auto k = static_cast<Eigen::Index>(i);
-        v(k) = (target(k) - x(k)) / dt;
-        x(k) = target(k);
-      }
-  }
-
-  double stable_dt_cache = -1.0;
   double stable_dt() {
     if (stable_dt_cache >= 0.0) return stable_dt_cache;
     const SparseMatrix& k = rest_stiffness();
-    const int n = free.size();
-    if (n == 0) return stable_dt_cache = std::numeric_limits<double>::infinity();
-    // Power iteration on M^-1/2 K M^-1/2 (symmetric, same spectrum as M^-1 K) on the free DOFs.
-    VecX inv_sqrt_m(n), z = VecX::Ones(n), full = VecX::Zero(x.size());
-    for (int i = 0; i < n; ++i) inv_sqrt_m(i) = 1.0 / std::sqrt(dyn.mass(free.free[static_cast<size_t>(i)]));
-    for (int i = 0; i < n; ++i) z(i) += 0.1 * std::sin(1.0 + i);  // break symmetries
+    // Power iteration on M^-1/2 K M^-1/2 (symmetric, same spectrum as M^-1 K) restricted to the free DOFs.
+    VecX inv_sqrt_m = VecX::Zero(nd), z = VecX::Zero(nd), kz(nd);
+    for (Eigen::Index i = 0; i < nd; ++i)
+      if (!fixed(i)) {
+        inv_sqrt_m(i) = 1.0 / std::sqrt(dyn.mass(i));
+        z(i) = 1.0 + 0.1 * std::sin(1.0 + static_cast<double>(i));  // break symmetries
+      }
     double lambda = 0.0;
-    for (int it = 0; it < 200; ++it) {
+    for (int it = 0; it < 200 && z.norm() > 0.0; ++it) {
       z.normalize();
-      full.setZero();
-      for (int i = 0; i < n; ++i) full(free.free[static_cast<size_t>(i)]) = inv_sqrt_m(i) * z(i);
-      const VecX kz = k * full;
-      VecX y(n);
-      for (int i = 0; i < n; ++i) y(i) = inv_sqrt_m(i) * kz(free.free[static_cast<size_t>(i)]);
-      lambda = z.dot(y);
-      z = y;
-      if (z.norm() == 0.0) break;
+      multiply(k, inv_sqrt_m.cwiseProduct(z), kz);
+      const VecX next = inv_sqrt_m.cwiseProduct(kz);
+      lambda = z.dot(next);
+      z = next;
     }
     return stable_dt_cache = lambda > 0.0 ? 2.0 / std::sqrt(lambda) : std::numeric_limits<double>::infinity();
   }
 
-  // Incremental potential of implicit Euler (w = 1/dt^2) or the static potential (w = 0) at y.
-  double objective(const VecX& y, const VecX& x_hat, double w, double dt) const {
-    const double e = model().energy(y);
+  // Incremental potential of implicit Euler (w = 1/dt^2) or the static potential (w = 0) at z.
+  double objective(const VecX& z, double w, double dt) {
+    const double e = model().energy(z);
     if (!std::isfinite(e)) return e;
-    double phi = e - f_total.dot(y - model().rest_positions());
-    if (w > 0.0) phi += 0.5 * w * (y - x_hat).cwiseAbs2().dot(dyn.mass);
-    if (damping.rows() > 0 && dt > 0.0) phi += 0.5 / dt * (y - x_n).dot(damping * (y - x_n));
+    double phi = e - f_total.dot(z - model().rest_positions());
+    if (w > 0.0) phi += 0.5 * w * (z - x_hat).cwiseAbs2().dot(dyn.mass);
+    if (damped() && dt > 0.0) {
+      damp_in = z - x_n;
+      damping_product(damp_in, damp_out);
+      phi += 0.5 / dt * damp_in.dot(damp_out);
+    }
     return phi;
   }
 
-  VecX objective_gradient(const VecX& y, const VecX& x_hat, double w, double dt) const {
-    VecX g = model().gradient(y) - f_total;
-    if (w > 0.0) g += w * dyn.mass.cwiseProduct(y - x_hat);
-    if (damping.rows() > 0 && dt > 0.0) g += damping * (y - x_n) / dt;
-    return g;
+  // out = d objective / dz, zero on the fixed DOFs.
+  void objective_gradient(const VecX& z, double w, double dt, VecX& out) {
+    model().gradient(z, out);
+    out -= f_total;
+    if (w > 0.0) out += w * dyn.mass.cwiseProduct(z - x_hat);
+    if (damped() && dt > 0.0) {
+      damp_in = z - x_n;
+      damping_product(damp_in, damp_out);
+      out += damp_out / dt;
+    }
+    for (Eigen::Index i = 0; i < nd; ++i)
+      if (fixed(i)) out(i) = 0.0;
+  }
+
+  // The Newton matrix H + w M + D/dt at z, fixed DOFs replaced by the identity, in the assembly's matrix.
+  SparseMatrix& newton_matrix(const VecX& z, double w, double dt) {
+    model::HessianAssembly& a = hessian_assembly();
+    if (damped() && dt > 0.0 && dyn.stiffness_damping > 0.0) rest_stiffness();  // before `a` is overwritten
+    a.assemble(z, opt.project_psd);
+    double* values = a.matrix().valuePtr();
+    if (damped() && dt > 0.0 && dyn.stiffness_damping > 0.0) {
+      const double* k = k0.valuePtr();
+      for (Eigen::Index q = 0; q < a.matrix().nonZeros(); ++q) values[q] += dyn.stiffness_damping / dt * k[q];
+    }
+    const double mass_factor = w + (dt > 0.0 ? dyn.mass_damping / dt : 0.0);
+    for (Eigen::Index i = 0; i < nd; ++i) values[a.diagonal()[static_cast<size_t>(i)]] += mass_factor * dyn.mass(i);
+    constrain(a.matrix(), problem.fixed_dofs, 1);
+    return a.matrix();
+  }
+
+  // Factorises h, with Levenberg shifts on the free diagonal where the (projected) matrix is still not positive
+  // definite (free particles in a quasi-static step, round-off).
+  void factorize(SparseMatrix& h) {
+    double shift = 0.0;
+    const double diag = h.diagonal().cwiseAbs().maxCoeff();
+    const std::vector<int>& d = assembly->diagonal();
+    for (int attempt = 0; attempt < 12; ++attempt) {
+      if (cholesky.factorize(h)) return;
+      const double next = shift == 0.0 ? 1e-10 * diag : 10.0 * shift;
+      for (Eigen::Index i = 0; i < nd; ++i)
+        if (!fixed(i)) h.valuePtr()[d[static_cast<size_t>(i)]] += next - shift;
+      shift = next;
+    }
+    throw SolverFailure("the Newton matrix of the time step is not positive definite even with a shift");
+  }
+
+  // Jacobi-preconditioned conjugate gradients on h delta = -grad, warm-started from the last solution.
+  void conjugate_gradient(const SparseMatrix& h) {
+    if (cg_r.size() != nd) {
+      for (VecX* w : {&cg_r, &cg_z, &cg_p, &cg_q, &cg_inv_diag}) w->setZero(nd);
+      delta.setZero();
+    }
+    const std::vector<int>& d = assembly->diagonal();
+    for (Eigen::Index i = 0; i < nd; ++i) cg_inv_diag(i) = 1.0 / h.valuePtr()[d[static_cast<size_t>(i)]];
+    multiply(h, delta, cg_q);
+    cg_r = -grad - cg_q;
+    const double target = 1e-10 * grad.norm();
+    cg_z = cg_inv_diag.cwiseProduct(cg_r);
+    cg_p = cg_z;
+    double rz = cg_r.dot(cg_z);
+    for (Eigen::Index k = 0; k < 4 * nd && cg_r.norm() > target; ++k) {
+      multiply(h, cg_p, cg_q);
+      const double alpha = rz / cg_p.dot(cg_q);
+      delta += alpha * cg_p;
+      cg_r -= alpha * cg_q;
+      cg_z = cg_inv_diag.cwiseProduct(cg_r);
+      const double rz_next = cg_r.dot(cg_z);
+      cg_p = cg_z + (rz_next / rz) * cg_p;
+      rz = rz_next;
+    }
   }
 
   // Newton's method with backtracking line search on the objective; y holds the start and the result.
-  StepReport newton(VecX& y, const VecX& x_hat, double w, double dt) {
+  StepReport newton(double w, double dt) {
     StepReport r;
-    const double scale =
-        free.restrict(f_total).norm() + free.restrict(objective_gradient(y, x_hat, w, dt)).norm() + 1e-30;
-    double phi = objective(y, x_hat, w, dt);
+    objective_gradient(y, w, dt, grad);
+    double load = 0.0;
+    for (Eigen::Index i = 0; i < nd; ++i)
+      if (!fixed(i)) load += f_total(i) * f_total(i);
+    const double scale = std::sqrt(load) + grad.norm() + 1e-30;
+    double phi = objective(y, w, dt);
     double previous = std::numeric_limits<double>::infinity();
     int it = 0;
     for (; it < opt.max_newton_iterations; ++it) {
-      const VecX g = objective_gradient(y, x_hat, w, dt);
-      const VecX gf = free.restrict(g);
-      r.residual = gf.norm();
+      objective_gradient(y, w, dt, grad);
+      r.residual = grad.norm();
       r.iterations = it;
       if (r.residual <= opt.newton_tolerance * scale) return r;
       // Modified Newton: keep the last factorisation (of an earlier iterate, possibly an earlier step) while it
       // still reduces the residual at least fourfold per iteration; refactorise when it does not, when it
       // gives no descent, or when its line search fails.
-      const bool reuse = opt.linear_solver == NewtonLinearSolver::kCholesky && opt.reuse_factorization && have_factor &&
-                         factor_w == w && factor_dt == dt && r.residual <= 0.25 * previous;
-      VecX delta;
-      if (reuse) {
-        delta = cholesky.solve(-gf);
+      const bool cg = opt.linear_solver == NewtonLinearSolver::kConjugateGradient;
+      const bool reuse = !cg && opt.reuse_factorization && have_factor && factor_w == w && factor_dt == dt &&
+                         r.residual <= 0.25 * previous;
+      if (cg) {
+        conjugate_gradient(newton_matrix(y, w, dt));
       } else {
-        SparseMatrix h = free.restrict(model().hessian(y, opt.project_psd));
-        if (damping.rows() > 0 && dt > 0.0) h += free.restrict(damping) / dt;
-        for (int i = 0; i < free.size(); ++i) h.coeffRef(i, i) += w * dyn.mass(free.free[static_cast<size_t>(i)]);
-        delta = solve_linear(h, -gf);
-        have_factor = opt.linear_solver == NewtonLinearSolver::kCholesky;
-        factor_w = w;
-        factor_dt = dt;
+        if (!reuse) {
+          factorize(newton_matrix(y, w, dt));
+          have_factor = true;
+          factor_w = w;
+          factor_dt = dt;
+        }
+        delta = -grad;
+        cholesky.solve_in_place(delta.data(), 1);
       }
       previous = reuse ? r.residual : std::numeric_limits<double>::infinity();
-      double alpha = 1.0, slope = gf.dot(delta);
+      double alpha = 1.0;
+      const double slope = grad.dot(delta);
       if (!(slope < 0.0)) {
         if (!reuse) break;
         have_factor = false;
         continue;
       }
-      VecX trial = y;
       bool accepted = false;
       for (int ls = 0; ls < 40; ++ls) {
-        trial = y;
-        for (int i = 0; i < free.size(); ++i) trial(free.free[static_cast<size_t>(i)]) += alpha * delta(i);
-        const double p = objective(trial, x_hat, w, dt);
+        trial = y + alpha * delta;
+        const double p = objective(trial, w, dt);
         if (std::isfinite(p) && p <= phi + 1e-4 * alpha * slope) {
           phi = p;
           accepted = true;
@@ -262,50 +375,33 @@ struct Simulator::Impl {
       y = trial;
       if (alpha * delta.cwiseAbs().maxCoeff() < 1e-15 * (1.0 + y.cwiseAbs().maxCoeff())) {
         r.iterations = it + 1;
-        r.residual = free.restrict(objective_gradient(y, x_hat, w, dt)).norm();
+        objective_gradient(y, w, dt, grad);
+        r.residual = grad.norm();
         return r;
       }
     }
-    r.residual = free.restrict(objective_gradient(y, x_hat, w, dt)).norm();
+    objective_gradient(y, w, dt, grad);
+    r.residual = grad.norm();
     r.converged = r.residual <= opt.newton_tolerance * scale;
     r.iterations = it;  // the limit, or where the line search found no descent
     return r;
   }
 
-  VecX solve_linear(SparseMatrix& h, const VecX& rhs) {
-    if (opt.linear_solver == NewtonLinearSolver::kConjugateGradient) {
-      Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg(h);
-      cg.setTolerance(1e-10);
-      if (cg_guess.size() != rhs.size()) cg_guess = VecX::Zero(rhs.size());
-      VecX d = cg.solveWithGuess(rhs, cg_guess);
-      cg_guess = d;
-      return d;
-    }
-    // Levenberg shifts where the (projected) matrix is still not positive definite (free particles in a
-    // quasi-static step, or round-off).
-    double shift = 0.0;
-    const double diag = h.diagonal().cwiseAbs().maxCoeff();
-    for (int attempt = 0; attempt < 12; ++attempt) {
-      if (cholesky.factorize(h)) return cholesky.solve(rhs);
-      const double next = shift == 0.0 ? 1e-10 * diag : 10.0 * shift;
-      for (int i = 0; i < h.rows(); ++i) h.coeffRef(i, i) += next - shift;
-      shift = next;
-    }
-    throw SolverFailure("the Newton matrix of the time step is not positive definite even with a shift");
-  }
-
   StepReport implicit_step(double dt, bool quasi_static) {
     x_n = x;
-    VecX x_hat = x + dt * v, y = x_hat;
-    apply_prescribed(y);
+    x_hat = x + dt * v;
     apply_prescribed(x_hat);
+    y = x_hat;
     if (quasi_static || !std::isfinite(model().energy(y))) {
       y = x;
       apply_prescribed(y);
     }
     const double w = quasi_static ? 0.0 : 1.0 / (dt * dt);
-    StepReport r = newton(y, x_hat, w, quasi_static ? 0.0 : dt);
-    v = quasi_static ? VecX::Zero(x.size()) : VecX((y - x) / dt);
+    StepReport r = newton(w, quasi_static ? 0.0 : dt);
+    if (quasi_static)
+      v.setZero();
+    else
+      v = (y - x) / dt;
     x = y;
     gradient_valid = false;
     return r;
@@ -318,75 +414,74 @@ struct Simulator::Impl {
       if (!s)
         throw InvalidArgument("local-global needs a spring-only model; this one has a '" + std::string(b->name()) +
                               "' block (use implicit-euler)");
-      const Eigen::Index off = springs.k.size();
-      springs.pairs.insert(springs.pairs.end(), s->pairs().begin(), s->pairs().end());
-      springs.k.conservativeResize(off + s->stiffness().size());
-      springs.k.tail(s->stiffness().size()) = s->stiffness();
-      springs.l0.conservativeResize(off + s->rest_length().size());
-      springs.l0.tail(s->rest_length().size()) = s->rest_length();
+      springs.blocks.push_back(s);
     }
+    lg_rhs0.setZero(nd);
+    lg_jd.setZero(nd);
   }
 
-  // Local step of Liu et al. 2013: each spring's best direction d_s = l0_s (y_i - y_j) / |y_i - y_j|,
-  // accumulated as J d (k_s d_s added at i, subtracted at j). Fixed-size vectors: no allocation per spring.
-  template <int D>
-  void local_step(const VecX& y, VecX& jd) const {
-    jd.setZero();
-    for (size_t s = 0; s < springs.pairs.size(); ++s) {
-      const int i = springs.pairs[s][0], j = springs.pairs[s][1];
-      const Eigen::Matrix<double, D, 1> dij = y.segment<D>(D * i) - y.segment<D>(D * j);
-      const double len = dij.norm();
-      if (len == 0.0) continue;
-      const Eigen::Matrix<double, D, 1> ds =
-          (springs.k(static_cast<Eigen::Index>(s)) * springs.l0(static_cast<Eigen::Index>(s)) / len) * dij;
-      jd.segment<D>(D * i) += ds;
-      jd.segment<D>(D * j) -= ds;
+  // The global matrix M/dt^2 + D/dt + sum_s k_s (e_i - e_j)(e_i - e_j)^T. Without stiffness damping, with equal
+  // masses on a node's axes and nodes fixed on all axes or none, it is (per-node matrix) x I_dim: one factor of
+  // a #nodes-square matrix then serves every axis (Kronecker form).
+  void setup_global_matrix(double dt) {
+    const int d = model().dim();
+    bool kronecker = dyn.stiffness_damping == 0.0;
+    for (Eigen::Index i = 0; i < nd && kronecker; ++i)
+      kronecker = dyn.mass(i) == dyn.mass(i - i % d) && fixed(i) == fixed(i - i % d);
+    lg_components = kronecker ? d : 1;
+    const int r = lg_components, n = static_cast<int>(nd) / r, axes = d / r;
+    std::vector<Triplet> t;
+    for (const springs::SpringBlock* b : springs.blocks)
+      for (size_t s = 0; s < b->pairs().size(); ++s) {
+        const int i = b->pairs()[s][0], j = b->pairs()[s][1];
+        const double k = b->stiffness()(static_cast<Eigen::Index>(s));
+        for (int a = 0; a < axes; ++a) {
+          t.emplace_back(axes * i + a, axes * i + a, k);
+          t.emplace_back(axes * j + a, axes * j + a, k);
+          t.emplace_back(axes * i + a, axes * j + a, -k);
+          t.emplace_back(axes * j + a, axes * i + a, -k);
+        }
+      }
+    for (int u = 0; u < n; ++u) {
+      const double m = dyn.mass(r * u);
+      t.emplace_back(u, u, m / (dt * dt) + dyn.mass_damping * m / dt);
     }
+    lg_a.resize(n, n);
+    lg_a.setFromTriplets(t.begin(), t.end());
+    if (dyn.stiffness_damping > 0.0) lg_a += (dyn.stiffness_damping / dt) * rest_stiffness();
+    SparseMatrix constrained = lg_a;
+    constrain(constrained, problem.fixed_dofs, r);
+    if (!lg_factor.factorize(constrained))
+      throw SolverFailure("the local-global system matrix is not positive definite");
+    lg_dt = dt;
   }
 
   StepReport local_global_step(double dt) {
-    const int d = model().dim();
-    const Eigen::Index nd = x.size();
-    if (dt != lg_dt) {
-      std::vector<Triplet> t;
-      for (size_t s = 0; s < springs.pairs.size(); ++s) {
-        const int i = springs.pairs[s][0], j = springs.pairs[s][1];
-        const double k = springs.k(static_cast<Eigen::Index>(s));
-        for (int a = 0; a < d; ++a) {
-          t.emplace_back(d * i + a, d * i + a, k);
-          t.emplace_back(d * j + a, d * j + a, k);
-          t.emplace_back(d * i + a, d * j + a, -k);
-          t.emplace_back(d * j + a, d * i + a, -k);
-        }
-      }
-      for (Eigen::Index i = 0; i < nd; ++i) t.emplace_back(i, i, dyn.mass(i) / (dt * dt));
-      lg_a.resize(nd, nd);
-      lg_a.setFromTriplets(t.begin(), t.end());
-      if (damping.rows() > 0) lg_a += damping / dt;
-      if (!lg_factor.factorize(free.restrict(lg_a)))
-        throw SolverFailure("the local-global system matrix is not positive definite");
-      lg_dt = dt;
-    }
+    if (dt != lg_dt) setup_global_matrix(dt);
     x_n = x;
-    VecX x_hat = x + dt * v, y = x_hat;
+    x_hat = x + dt * v;
+    y = x_hat;
     apply_prescribed(y);
-    VecX fixed_part = VecX::Zero(nd);
-    for (size_t i = 0; i < problem.fixed_dofs.size(); ++i)
-      if (problem.fixed_dofs[i]) fixed_part(static_cast<Eigen::Index>(i)) = y(static_cast<Eigen::Index>(i));
-    VecX rhs0 = dyn.mass.cwiseProduct(x_hat) / (dt * dt) + f_total - lg_a * fixed_part;
-    if (damping.rows() > 0) rhs0 += damping * x_n / dt;
-    VecX jd(nd);
+    // Right-hand side without the springs: M x_hat / dt^2 + f + D x_n / dt - A (fixed part of y).
+    lg_rhs0 = dyn.mass.cwiseProduct(x_hat) / (dt * dt) + f_total;
+    if (damped()) {
+      damping_product(x_n, damp_out);
+      lg_rhs0 += damp_out / dt;
+    }
+    for (Eigen::Index i = 0; i < nd; ++i) damp_in(i) = fixed(i) ? -y(i) : 0.0;
+    add_product(lg_a, damp_in, lg_components, lg_rhs0);
     for (int it = 0; it < opt.local_global_iterations; ++it) {
-      if (d == 3)
-        local_step<3>(y, jd);
-      else
-        local_step<2>(y, jd);
-      const VecX yf = lg_factor.solve(free.restrict(VecX(rhs0 + jd)));  // global step
-      for (int i = 0; i < free.size(); ++i) y(free.free[static_cast<size_t>(i)]) = yf(i);
+      // Local step (Liu et al. 2013): each spring's best direction d_s = l0_s (y_i - y_j)/|y_i - y_j|, as J d.
+      lg_jd.setZero();
+      for (const springs::SpringBlock* b : springs.blocks) b->add_rest_directions(y, lg_jd);
+      for (Eigen::Index i = 0; i < nd; ++i) rhs(i) = fixed(i) ? y(i) : lg_rhs0(i) + lg_jd(i);
+      lg_factor.solve_in_place(rhs.data(), lg_components);  // global step
+      y = rhs;
     }
     StepReport r;
     r.iterations = opt.local_global_iterations;
-    r.residual = free.restrict(objective_gradient(y, x_hat, 1.0 / (dt * dt), dt)).norm();
+    objective_gradient(y, 1.0 / (dt * dt), dt, grad);
+    r.residual = grad.norm();
     v = (y - x) / dt;
     x = y;
     gradient_valid = false;
@@ -398,22 +493,19 @@ Simulator::Simulator(model::Problem problem, Dynamics dynamics, SimulatorOptions
     : m(std::make_unique<Impl>(std::move(problem), std::move(dynamics), options)) {
   const int nd = m->model().dof_count();
   if (m->problem.fixed_dofs.size() != static_cast<size_t>(nd)) m->problem.fixed_dofs.assign(nd, 0);
+  auto is_free = [&](int i) { return !m->problem.fixed_dofs[static_cast<size_t>(i)]; };
   if (m->dyn.mass.size() != nd) throw InvalidArgument("Simulator: the mass vector needs one entry per DOF");
-  for (int i : m->free.free)
-    if (!(m->dyn.mass(i) > 0.0)) throw InvalidArgument("Simulator: free DOF " + std::to_string(i) + " has no mass");
+  for (int i = 0; i < nd; ++i)
+    if (is_free(i) && !(m->dyn.mass(i) > 0.0))
+      throw InvalidArgument("Simulator: free DOF " + std::to_string(i) + " has no mass");
   if (m->dyn.gravity.size() != 0 && m->dyn.gravity.size() != m->model().dim())
     throw InvalidArgument("Simulator: gravity needs one component per axis");
   if (m->dyn.mass_damping < 0.0 || m->dyn.stiffness_damping < 0.0)
     throw InvalidArgument("Simulator: Rayleigh damping coefficients must be >= 0");
-  if (m->dyn.mass_damping > 0.0 || m->dyn.stiffness_damping > 0.0) {
-    m->damping = m->dyn.stiffness_damping * m->rest_stiffness();
-    if (m->damping.rows() == 0) m->damping.resize(nd, nd);
-    for (int i = 0; i < nd; ++i) m->damping.coeffRef(i, i) += m->dyn.mass_damping * m->dyn.mass(i);
-  }
+  if (m->dyn.stiffness_damping > 0.0) m->rest_stiffness();
   if (options.integrator == Integrator::kLocalGlobal) m->setup_local_global();
   m->base_fixed = m->problem.fixed_dofs;
   m->x = model::initial_positions(m->problem);
-  m->v = VecX::Zero(nd);
 }
 
 Simulator::~Simulator() = default;
@@ -433,7 +525,7 @@ StepReport Simulator::step(double dt) {
     case Integrator::kLocalGlobal: r = m->local_global_step(dt); break;
   }
   m->time_s += dt;
-  r.probe_force = m->probe_force();
+  m->add_probe_force(r);
   return r;
 }
 

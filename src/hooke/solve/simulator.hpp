@@ -44,8 +44,9 @@ struct StepReport {
   bool beyond_stable_dt = false;  ///< explicit only: dt exceeded stable_time_step()
   /// The force the body exerts on the probe at the end of the step, N (dim; zero without a probe): what a
   /// haptic device renders. Driven nodes: minus the force needed to hold them, sum over them of
-  /// -(dE/dx - loads) (their own inertia excluded); pushed nodes: minus the applied force.
-  VecX probe_force;
+  /// -(dE/dx - loads) (their own inertia excluded); pushed nodes: minus the applied force. Size dim, stored
+  /// inline (no allocation).
+  Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 3, 1> probe_force;
 };
 
 /// Steps a problem (model, fixed DOFs with their prescribed positions, dead external forces) in time.
@@ -60,7 +61,10 @@ class Simulator {
   Simulator(Simulator&&) noexcept;
   Simulator& operator=(Simulator&&) noexcept;
 
-  /// Advances the state by dt seconds. @pre dt > 0
+  /// Advances the state by dt seconds. Allocates nothing after the first step (after the first step that follows
+  /// a new dt or set_probe for local-global), except where implicit-euler / quasi-static with the Cholesky solver
+  /// refactorise the Newton matrix inside CHOLMOD, or with Eigen's LDL^T below 1 000 DOFs (docs/simulation.md).
+  /// @pre dt > 0
   StepReport step(double dt);
 
   double time() const;             ///< s

@@ -69,6 +69,21 @@ void add_spring_gradients(const std::vector<std::array<int, 2>>& pairs, const Ve
 }
 
 template <int D>
+void add_directions(const std::vector<std::array<int, 2>>& pairs, const VecX& stiffness, const VecX& rest,
+                    std::span<const int> springs, const double* x, double* out) {
+  using Vec = Eigen::Matrix<double, D, 1>;
+  for (int s : springs) {
+    const auto [i, j] = pairs[static_cast<size_t>(s)];
+    const Vec d = Vec::Map(x + D * i) - Vec::Map(x + D * j);
+    const double l = d.norm();
+    if (l == 0.0) continue;
+    const Vec f = (stiffness(s) * rest(s) / l) * d;
+    Vec::Map(out + D * i) += f;
+    Vec::Map(out + D * j) -= f;
+  }
+}
+
+template <int D>
 void add_spring_hessians(const std::vector<std::array<int, 2>>& pairs, const VecX& stiffness, const VecX& rest,
                          std::span<const int> springs, const double* x, const model::HessianScatter& scatter,
                          double* values, bool project_psd) {
@@ -94,6 +109,15 @@ void SpringBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX>
       add_spring_gradients<3>(m_pairs, m_stiffness, m_rest_length, springs, x.data(), gradient.data());
     else
       add_spring_gradients<2>(m_pairs, m_stiffness, m_rest_length, springs, x.data(), gradient.data());
+  });
+}
+
+void SpringBlock::add_rest_directions(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> out) const {
+  m_schedule.for_each_chunk([&](std::span<const int> springs, int) {
+    if (m_dim == 3)
+      add_directions<3>(m_pairs, m_stiffness, m_rest_length, springs, x.data(), out.data());
+    else
+      add_directions<2>(m_pairs, m_stiffness, m_rest_length, springs, x.data(), out.data());
   });
 }
 

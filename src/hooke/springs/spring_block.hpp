@@ -40,6 +40,11 @@ class SpringBlock final : public model::TermBlock {
   void add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter, double* values,
                           bool project_psd) const override;
 
+  /// Local step of Liu et al. 2013 (Fast Simulation of Mass-Spring Systems, Sec. 3): adds J d, i.e.
+  /// k l0 (x_i - x_j)/|x_i - x_j| at node i and its negative at node j, N, to `out` (size of x). A spring of
+  /// zero length adds nothing.
+  void add_rest_directions(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> out) const;
+
   int dim() const { return m_dim; }
   const std::vector<std::array<int, 2>>& pairs() const { return m_pairs; }
   const VecX& stiffness() const { return m_stiffness; }
