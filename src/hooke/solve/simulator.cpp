@@ -225,7 +225,13 @@ struct Simulator::Impl {
       lambda = z.dot(next);
       z = next;
     }
-    return stable_dt_cache = lambda > 0.0 ? 2.0 / std::sqrt(lambda) : std::numeric_limits<double>::infinity();
+    if (!(lambda > 0.0)) return stable_dt_cache = std::numeric_limits<double>::infinity();
+    // Central differences with Rayleigh damping of ratio zeta = (alpha / omega + beta omega) / 2 at the highest
+    // frequency are stable for omega dt <= 2 (sqrt(1 + zeta^2) - zeta) (e.g. Belytschko et al., Nonlinear
+    // Finite Elements, Sec. 6.2); zeta = 0 gives 2 / omega.
+    const double omega = std::sqrt(lambda);
+    const double zeta = 0.5 * (dyn.mass_damping / omega + dyn.stiffness_damping * omega);
+    return stable_dt_cache = 2.0 / omega * (std::sqrt(1.0 + zeta * zeta) - zeta);
   }
 
   // Incremental potential of implicit Euler (w = 1/dt^2) or the static potential (w = 0) at z.

@@ -87,8 +87,9 @@ class Simulator {
   double potential_energy() const;
   /// Linear momentum sum M v per axis, kg m/s (size dim).
   VecX momentum() const;
-  /// Explicit stability limit 2 / omega_max (s), omega_max^2 the largest eigenvalue of M^-1 K0 on the free DOFs
-  /// (power iteration); damping ignored.
+  /// Explicit stability limit (s): 2 / omega_max (sqrt(1 + zeta^2) - zeta), omega_max^2 the largest eigenvalue of
+  /// M^-1 K0 on the free DOFs (power iteration), zeta = (alpha / omega_max + beta omega_max) / 2 the Rayleigh
+  /// damping ratio there (2 / omega_max undamped).
   double stable_time_step() const;
 
  private:

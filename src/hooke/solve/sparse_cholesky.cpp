@@ -2,6 +2,7 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
+#include <algorithm>
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/solve/sparse_cholesky.hpp>
@@ -18,37 +19,60 @@ constexpr Eigen::Index kSmallSystem = 1000;
 
 namespace {
 
-// OpenBLAS's thread count, when OpenBLAS is the BLAS CHOLMOD runs on (looked up at run time: the reference BLAS
-// has no such calls). The real-time solves run single-threaded: their dense blocks are small, and BLAS threads
-// that wake for each of them compete with the element loops' OpenMP threads for the two cores (measured on the
-// 11 025-node local/global step: 47 ms with both, 31 ms with single-threaded BLAS).
-struct BlasThreads {
-  using Set = void (*)(int);
-  using Get = int (*)();
-  Set set = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-  Get get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-};
-
-const BlasThreads& blas_threads() {
-  static const BlasThreads threads;
-  return threads;
+// L L^T x = b for CHOLMOD's supernodal factor of P A P^T, R right-hand sides interleaved, with hand-written dense
+// kernels: CHOLMOD's own solve goes through BLAS, whose small-matrix dgemm kernel in OpenBLAS 0.3.21 calls malloc
+// on every call (caught by tests/solve/test_simulator_allocation.cpp). w: n x R work; t: max rows x R work.
+template <int R>
+void supernodal_solve(const cholmod_factor& l, double* b, double* w, double* t) {
+  const auto n = static_cast<int>(l.n);
+  const int* perm = static_cast<const int*>(l.Perm);
+  const int* super = static_cast<const int*>(l.super);
+  const int* pi = static_cast<const int*>(l.pi);
+  const int* px = static_cast<const int*>(l.px);
+  const int* rows = static_cast<const int*>(l.s);
+  const double* lx = static_cast<const double*>(l.x);
+  const auto nsuper = static_cast<int>(l.nsuper);
+  for (int k = 0; k < n; ++k)
+    for (int r = 0; r < R; ++r) w[R * k + r] = b[R * perm[k] + r];
+  for (int s = 0; s < nsuper; ++s) {  // L y = P b
+    const int k1 = super[s], nsc = super[s + 1] - k1, nsrow = pi[s + 1] - pi[s];
+    const int* srows = rows + pi[s];
+    const double* block = lx + px[s];  // nsrow x nsc, column-major; its first nsc rows are k1 .. k1 + nsc - 1
+    const int below = nsrow - nsc;
+    std::fill(t, t + static_cast<ptrdiff_t>(below) * R, 0.0);
+    for (int j = 0; j < nsc; ++j) {
+      const double* column = block + static_cast<ptrdiff_t>(j) * nsrow;
+      double yj[R];
+      for (int r = 0; r < R; ++r) yj[r] = w[R * (k1 + j) + r] /= column[j];
+      for (int i = j + 1; i < nsc; ++i)
+        for (int r = 0; r < R; ++r) w[R * (k1 + i) + r] -= column[i] * yj[r];
+      for (int i = 0; i < below; ++i)
+        for (int r = 0; r < R; ++r) t[R * i + r] += column[nsc + i] * yj[r];
+    }
+    for (int i = 0; i < below; ++i)
+      for (int r = 0; r < R; ++r) w[R * srows[nsc + i] + r] -= t[R * i + r];
+  }
+  for (int s = nsuper - 1; s >= 0; --s) {  // L^T z = y
+    const int k1 = super[s], nsc = super[s + 1] - k1, nsrow = pi[s + 1] - pi[s];
+    const int* srows = rows + pi[s];
+    const double* block = lx + px[s];
+    const int below = nsrow - nsc;
+    for (int i = 0; i < below; ++i)
+      for (int r = 0; r < R; ++r) t[R * i + r] = w[R * srows[nsc + i] + r];
+    for (int j = nsc - 1; j >= 0; --j) {
+      const double* column = block + static_cast<ptrdiff_t>(j) * nsrow;
+      double zj[R];
+      for (int r = 0; r < R; ++r) zj[r] = w[R * (k1 + j) + r];
+      for (int i = j + 1; i < nsc; ++i)
+        for (int r = 0; r < R; ++r) zj[r] -= column[i] * w[R * (k1 + i) + r];
+      for (int i = 0; i < below; ++i)
+        for (int r = 0; r < R; ++r) zj[r] -= column[nsc + i] * t[R * i + r];
+      for (int r = 0; r < R; ++r) w[R * (k1 + j) + r] = zj[r] / column[j];
+    }
+  }
+  for (int k = 0; k < n; ++k)
+    for (int r = 0; r < R; ++r) b[R * perm[k] + r] = w[R * k + r];
 }
-
-// Runs the enclosing scope with one BLAS thread.
-class SingleThreadedBlas {
- public:
-  SingleThreadedBlas() : m_previous(blas_threads().get && blas_threads().set ? blas_threads().get() : 0) {
-    if (m_previous > 1) blas_threads().set(1);
-  }
-  ~SingleThreadedBlas() {
-    if (m_previous > 1) blas_threads().set(m_previous);
-  }
-  SingleThreadedBlas(const SingleThreadedBlas&) = delete;
-  SingleThreadedBlas& operator=(const SingleThreadedBlas&) = delete;
-
- private:
-  int m_previous;
-};
 
 // Eigen's CHOLMOD wrapper with access to its factor, to copy it into simplicial form.
 class CholmodLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
@@ -105,37 +129,20 @@ struct SparseCholesky::Impl {
   bool analyzed = false, ok = false;
   mutable SimplicialFactor simplicial;
   mutable bool extracted = false;
-  // cholmod_solve2 reuses these dense arrays when their sizes match: no allocation per solve.
-  mutable cholmod_dense *rhs = nullptr, *solution = nullptr, *work_y = nullptr, *work_e = nullptr;
+  mutable VecX supernodal_work, supernodal_rows;  // n x 3 and (largest supernode's rows) x 3
 
-  ~Impl() {
-    for (cholmod_dense** d : {&rhs, &solution, &work_y, &work_e})
-      if (*d) cholmod_free_dense(d, &cholmod.cholmod());
-  }
-  Impl() = default;
-  Impl(const Impl&) = delete;
-  Impl& operator=(const Impl&) = delete;
-
-  // Supernodal solve of CHOLMOD for nrhs interleaved right-hand sides (transposed to and from its columns).
   void cholmod_solve_in_place(double* b, int nrhs) const {
-    cholmod_common& c = cholmod.cholmod();
-    const auto n = static_cast<size_t>(rows);
-    if (!rhs || rhs->ncol != static_cast<size_t>(nrhs)) {
-      if (rhs) cholmod_free_dense(&rhs, &c);
-      rhs = cholmod_allocate_dense(n, static_cast<size_t>(nrhs), n, CHOLMOD_REAL, &c);
-      if (!rhs) throw SolverFailure("CHOLMOD could not allocate a right-hand side (out of memory?)");
+    const cholmod_factor& l = *cholmod.factor();
+    if (!l.is_super) throw SolverFailure("SparseCholesky: CHOLMOD returned a simplicial factor");
+    if (supernodal_work.size() != 3 * static_cast<Eigen::Index>(l.n)) {
+      supernodal_work.resize(3 * static_cast<Eigen::Index>(l.n));
+      supernodal_rows.resize(3 * static_cast<Eigen::Index>(l.maxesize) + 3);
     }
-    double* column_major = static_cast<double*>(rhs->x);
-    for (size_t i = 0; i < n; ++i)
-      for (int r = 0; r < nrhs; ++r)
-        column_major[static_cast<size_t>(r) * n + i] = b[static_cast<size_t>(nrhs) * i + static_cast<size_t>(r)];
-    const SingleThreadedBlas single;
-    if (!cholmod_solve2(CHOLMOD_A, cholmod.factor(), rhs, nullptr, &solution, nullptr, &work_y, &work_e, &c))
-      throw SolverFailure("CHOLMOD's solve failed");
-    const double* x = static_cast<const double*>(solution->x);
-    for (size_t i = 0; i < n; ++i)
-      for (int r = 0; r < nrhs; ++r)
-        b[static_cast<size_t>(nrhs) * i + static_cast<size_t>(r)] = x[static_cast<size_t>(r) * n + i];
+    double* w = supernodal_work.data();
+    double* t = supernodal_rows.data();
+    if (nrhs == 1) supernodal_solve<1>(l, b, w, t);
+    if (nrhs == 2) supernodal_solve<2>(l, b, w, t);
+    if (nrhs == 3) supernodal_solve<3>(l, b, w, t);
   }
 
   // Copies the current factor into `simplicial` (LL^T, P A P^T).

@@ -27,9 +27,9 @@ class SparseCholesky {
   /// Solves A x = b with the last successful factorisation. @pre factorize() returned true
   VecX solve(const VecX& b) const;
   /// Solves A X = B in place for `nrhs` (1, 2 or 3) right-hand sides stored interleaved, b[nrhs i + r] (a
-  /// row-major n x nrhs array: flat node-major positions when A is a per-node matrix). CHOLMOD: its supernodal
-  /// solve with reused work arrays; Eigen: triangular solves on a copy of the factor made at the first call
-  /// after a factorisation. Allocates nothing after the first call. @pre factorize() returned true
+  /// row-major n x nrhs array: flat node-major positions when A is a per-node matrix). Single-threaded triangular
+  /// solves on CHOLMOD's supernodal factor, or on a copy of Eigen's factor made at the first call after a
+  /// factorisation. Allocates nothing after the first call. @pre factorize() returned true
   void solve_in_place(double* b, int nrhs) const;
   /// Entries of the triangular factor of the last factorisation (its memory and solve cost).
   Eigen::Index factor_nonzeros() const;
