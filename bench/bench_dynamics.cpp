@@ -7,41 +7,16 @@
 // Run: build/release/bench/hooke_bench --benchmark_filter='Triad|Spring|Step'
 #include <benchmark/benchmark.h>
 
-#include <hooke/calibrate/method.hpp>
-#include <hooke/experiments/load_case.hpp>
-#include <hooke/mesh/generators.hpp>
-#include <hooke/model/mass.hpp>
-#include <hooke/solve/simulator.hpp>
-#include <hooke/springs/spring_block.hpp>
-#include <memory>
 #include <string>
 
 #include "bench_common.hpp"
+#include "bench_cylinder.hpp"
 
 namespace {
 
 using namespace hooke;
 
-struct Cylinder {
-  mesh::Mesh mesh;
-  std::shared_ptr<model::Model> model;
-  model::Problem problem;
-  solve::Dynamics dynamics;
-  const springs::SpringBlock* springs = nullptr;
-  explicit Cylinder(int size) {
-    const int n[3] = {10, 20, 44}, layers[3] = {8, 24, 50};
-    mesh = mesh::tet_cylinder(0.01, 0.02, n[size], layers[size]);
-    model = calibrate::make_model(
-        mesh, calibrate::calibrate(mesh, {{material::Law::kLinear, 14630.0, 0.25}}, calibrate::Method::kLloydTet));
-    for (const auto& b : model->blocks())
-      if (const auto* s = dynamic_cast<const springs::SpringBlock*>(b.get())) springs = s;
-    problem = model::make_problem(model);
-    model::fix_nodes(problem, experiments::make_load_case(mesh, experiments::LoadKind::kStretch, 0.0).fixed_nodes);
-    VecX g = VecX::Zero(3);
-    g(2) = -9.81;
-    dynamics = {model::lumped_masses(mesh, 1000.0), g, 0.0, 0.0};
-  }
-};
+using bench::Cylinder;
 
 void BM_DynTriad(benchmark::State& state) { bench::run_triad(state); }
 
