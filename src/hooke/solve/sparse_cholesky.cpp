@@ -40,14 +40,28 @@ void supernodal_solve(const cholmod_factor& l, double* b, double* w, double* t) 
     const double* block = lx + px[s];  // nsrow x nsc, column-major; its first nsc rows are k1 .. k1 + nsc - 1
     const int below = nsrow - nsc;
     std::fill(t, t + static_cast<ptrdiff_t>(below) * R, 0.0);
-    for (int j = 0; j < nsc; ++j) {
+    for (int j = 0; j < nsc; ++j) {  // diagonal block
       const double* column = block + static_cast<ptrdiff_t>(j) * nsrow;
-      double yj[R];
-      for (int r = 0; r < R; ++r) yj[r] = w[R * (k1 + j) + r] /= column[j];
+      for (int r = 0; r < R; ++r) w[R * (k1 + j) + r] /= column[j];
       for (int i = j + 1; i < nsc; ++i)
-        for (int r = 0; r < R; ++r) w[R * (k1 + i) + r] -= column[i] * yj[r];
+        for (int r = 0; r < R; ++r) w[R * (k1 + i) + r] -= column[i] * w[R * (k1 + j) + r];
+    }
+    // Rows below: t = L21 y, four columns per sweep so that t is read and written a quarter as often.
+    int j = 0;
+    for (; j + 4 <= nsc; j += 4) {
+      const double* c0 = block + static_cast<ptrdiff_t>(j) * nsrow + nsc;
+      const double *c1 = c0 + nsrow, *c2 = c1 + nsrow, *c3 = c2 + nsrow;
+      double y[4][R];
+      for (int q = 0; q < 4; ++q)
+        for (int r = 0; r < R; ++r) y[q][r] = w[R * (k1 + j + q) + r];
       for (int i = 0; i < below; ++i)
-        for (int r = 0; r < R; ++r) t[R * i + r] += column[nsc + i] * yj[r];
+        for (int r = 0; r < R; ++r)
+          t[R * i + r] += c0[i] * y[0][r] + c1[i] * y[1][r] + c2[i] * y[2][r] + c3[i] * y[3][r];
+    }
+    for (; j < nsc; ++j) {
+      const double* c0 = block + static_cast<ptrdiff_t>(j) * nsrow + nsc;
+      for (int i = 0; i < below; ++i)
+        for (int r = 0; r < R; ++r) t[R * i + r] += c0[i] * w[R * (k1 + j) + r];
     }
     for (int i = 0; i < below; ++i)
       for (int r = 0; r < R; ++r) w[R * srows[nsc + i] + r] -= t[R * i + r];
@@ -59,15 +73,35 @@ void supernodal_solve(const cholmod_factor& l, double* b, double* w, double* t) 
     const int below = nsrow - nsc;
     for (int i = 0; i < below; ++i)
       for (int r = 0; r < R; ++r) t[R * i + r] = w[R * srows[nsc + i] + r];
-    for (int j = nsc - 1; j >= 0; --j) {
-      const double* column = block + static_cast<ptrdiff_t>(j) * nsrow;
-      double zj[R];
-      for (int r = 0; r < R; ++r) zj[r] = w[R * (k1 + j) + r];
-      for (int i = j + 1; i < nsc; ++i)
-        for (int r = 0; r < R; ++r) zj[r] -= column[i] * w[R * (k1 + i) + r];
+    // z_j -= L21(:, j)^T t for every column, four columns per sweep over t.
+    int j = 0;
+    for (; j + 4 <= nsc; j += 4) {
+      const double* c0 = block + static_cast<ptrdiff_t>(j) * nsrow + nsc;
+      const double *c1 = c0 + nsrow, *c2 = c1 + nsrow, *c3 = c2 + nsrow;
+      double z[4][R] = {};
       for (int i = 0; i < below; ++i)
-        for (int r = 0; r < R; ++r) zj[r] -= column[nsc + i] * t[R * i + r];
-      for (int r = 0; r < R; ++r) w[R * (k1 + j) + r] = zj[r] / column[j];
+        for (int r = 0; r < R; ++r) {
+          const double ti = t[R * i + r];
+          z[0][r] += c0[i] * ti;
+          z[1][r] += c1[i] * ti;
+          z[2][r] += c2[i] * ti;
+          z[3][r] += c3[i] * ti;
+        }
+      for (int q = 0; q < 4; ++q)
+        for (int r = 0; r < R; ++r) w[R * (k1 + j + q) + r] -= z[q][r];
+    }
+    for (; j < nsc; ++j) {
+      const double* c0 = block + static_cast<ptrdiff_t>(j) * nsrow + nsc;
+      double z[R] = {};
+      for (int i = 0; i < below; ++i)
+        for (int r = 0; r < R; ++r) z[r] += c0[i] * t[R * i + r];
+      for (int r = 0; r < R; ++r) w[R * (k1 + j) + r] -= z[r];
+    }
+    for (int jj = nsc - 1; jj >= 0; --jj) {  // diagonal block, backwards
+      const double* column = block + static_cast<ptrdiff_t>(jj) * nsrow;
+      for (int i = jj + 1; i < nsc; ++i)
+        for (int r = 0; r < R; ++r) w[R * (k1 + jj) + r] -= column[i] * w[R * (k1 + i) + r];
+      for (int r = 0; r < R; ++r) w[R * (k1 + jj) + r] /= column[jj];
     }
   }
   for (int k = 0; k < n; ++k)
