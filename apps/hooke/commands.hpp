@@ -25,6 +25,8 @@ Action add_compare_command(CLI::App& app);
 Action add_reproduce_command(CLI::App& app);
 /// `hooke simulate`: dynamics with a ParaView time series and a timing report.
 Action add_simulate_command(CLI::App& app);
+/// `hooke bench`: the dynamics benchmark table.
+Action add_bench_command(CLI::App& app);
 /// `hooke mesh info|convert`: inspect and convert meshes.
 Action add_mesh_command(CLI::App& app);
 

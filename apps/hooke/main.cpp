@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   const hooke::cli::Action compare = hooke::cli::add_compare_command(app);
   const hooke::cli::Action reproduce = hooke::cli::add_reproduce_command(app);
   const hooke::cli::Action simulate = hooke::cli::add_simulate_command(app);
+  const hooke::cli::Action bench = hooke::cli::add_bench_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("compare")) return compare();
     if (app.got_subcommand("reproduce")) return reproduce();
     if (app.got_subcommand("simulate")) return simulate();
+    if (app.got_subcommand("bench")) return bench();
   } catch (const hooke::SolverFailure& e) {
     std::fprintf(stderr, "hooke: solver failure: %s\n", e.what());
     return 3;

@@ -71,3 +71,20 @@ if(NOT rc EQUAL 3 OR NOT err MATCHES "stability limit" OR EXISTS ${OUT}/sim_bad/
    OR EXISTS ${OUT}/sim_bad/frames.partial)
   message(FATAL_ERROR "an unstable explicit run must fail with exit code 3 and leave no series (got ${rc}: ${err})")
 endif()
+
+# hooke bench: the table on the 1 089-node cylinder, as Markdown and JSON; an unknown size is refused.
+execute_process(COMMAND ${HOOKE} bench --sizes 1k --steps 3 -o ${OUT}/bench RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "local-global" OR NOT EXISTS ${OUT}/bench/bench.json)
+  message(FATAL_ERROR "hooke bench failed: ${rc}")
+endif()
+file(READ ${OUT}/bench/bench.json bench_json)
+string(JSON steps LENGTH "${bench_json}" steps)
+if(NOT steps EQUAL 5)
+  message(FATAL_ERROR "hooke bench: expected 5 integrators in bench.json, got ${steps}")
+endif()
+execute_process(COMMAND ${HOOKE} bench --sizes 2k RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 2)
+  message(FATAL_ERROR "hooke bench --sizes 2k must fail with exit code 2 (got ${rc}: ${err})")
+endif()

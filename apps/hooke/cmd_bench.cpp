@@ -1,0 +1,80 @@
+// hooke bench [--sizes 1k,10k,100k] [--steps N] [-o DIR]: the dynamics benchmark table (ms/step per integrator
+// and mesh, spring-force throughput beside the in-run bandwidth bound). Bullet's ratio needs the Google
+// Benchmark peer: build/release/bench/hooke_bench --benchmark_filter=Peer.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <hooke/core/atomic_file.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/experiments/dynamics_benchmark.hpp>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+
+namespace hooke::cli {
+namespace {
+
+struct BenchCli {
+  std::vector<std::string> sizes{"1k", "10k"};
+  int steps = 40;
+  std::string out_dir;
+};
+
+int run_bench(const BenchCli& o) {
+  experiments::DynamicsBenchmarkOptions options;
+  options.sizes.clear();
+  for (const std::string& s : o.sizes) {
+    if (s == "1k")
+      options.sizes.push_back(0);
+    else if (s == "10k")
+      options.sizes.push_back(1);
+    else if (s == "100k")
+      options.sizes.push_back(2);
+    else
+      throw InvalidArgument("--sizes takes 1k, 10k and 100k, not '" + s + "'");
+  }
+  options.steps = o.steps;
+  const experiments::DynamicsBenchmarkReport report = experiments::run_dynamics_benchmark(options);
+  const std::string markdown = experiments::dynamics_benchmark_markdown(report);
+  std::printf("hooke bench: tet cylinders, lloyd-tet springs, gravity, bottom clamped\n\n%s", markdown.c_str());
+  std::printf("\nBullet's soft body at the same dt: build/release/bench/hooke_bench --benchmark_filter=Peer\n");
+  if (!o.out_dir.empty()) {
+    const std::filesystem::path dir(o.out_dir);
+    std::filesystem::create_directories(dir);
+    write_file_atomically(dir / "bench.md", [&](std::ostream& out) { out << markdown; });
+    nlohmann::json j;
+    j["triad_gbps"] = report.triad_gbps;
+    for (const auto& t : report.springs)
+      j["springs"].push_back({{"nodes", t.nodes},
+                              {"springs", t.springs},
+                              {"ns_per_spring", t.ns_per_spring},
+                              {"bandwidth_fraction", t.bandwidth_fraction}});
+    for (const auto& t : report.steps)
+      j["steps"].push_back({{"nodes", t.nodes},
+                            {"integrator", t.integrator},
+                            {"dt", t.dt},
+                            {"median_ms", t.median_ms},
+                            {"p95_ms", t.p95_ms},
+                            {"iterations", t.iterations}});
+    j["notes"] = report.notes;
+    write_file_atomically(dir / "bench.json", [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+    std::printf("wrote %s and bench.json\n", (dir / "bench.md").string().c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+Action add_bench_command(CLI::App& app) {
+  auto o = std::make_shared<BenchCli>();
+  CLI::App* cmd = app.add_subcommand("bench", "Dynamics benchmark: ms/step per integrator and mesh size");
+  cmd->add_option("--sizes", o->sizes, "Cylinder sizes: 1k, 10k, 100k")->delimiter(',')->capture_default_str();
+  cmd->add_option("--steps", o->steps, "Timed steps per integrator")->capture_default_str();
+  cmd->add_option("-o,--out", o->out_dir, "Also write bench.md and bench.json here");
+  return [o] { return run_bench(*o); };
+}
+
+}  // namespace hooke::cli
