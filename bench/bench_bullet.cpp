@@ -151,4 +151,6 @@ void BM_PeerAccuracy(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_PeerStep)->Arg(0)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
-BENCHMARK(BM_PeerAccuracy)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond);
+// The 11 025-node case is left out: its reference static solve ran over 5 minutes here (CHOLMOD factorisations of
+// 33 000 DOFs with OpenBLAS threads yielding to each other); see docs/simulation.md.
+BENCHMARK(BM_PeerAccuracy)->Arg(0)->Iterations(1)->Unit(benchmark::kSecond);
