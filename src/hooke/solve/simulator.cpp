@@ -37,12 +37,6 @@ void constrain(SparseMatrix& a, const std::vector<char>& fixed, int stride) {
   }
 }
 
-// Liu et al. 2013: the spring part of the incremental potential as min over directions d_s, |d_s| = l0_s, of
-// sum_s k_s/2 |x_i - x_j - d_s|^2, which makes the global step one constant linear system.
-struct Springs {
-  std::vector<const springs::SpringBlock*> blocks;
-};
-
 }  // namespace
 
 Integrator integrator_from_name(std::string_view name) {
@@ -75,7 +69,10 @@ struct Simulator::Impl {
   bool have_factor = false;  // `cholesky` holds a factorisation of an earlier Newton matrix
   double factor_w = -1.0, factor_dt = -1.0;
   VecX cg_r, cg_z, cg_p, cg_q, cg_inv_diag;
-  Springs springs;           // local-global only
+  // Local-global only: the spring blocks. Liu et al. 2013 write the springs' part of the incremental potential
+  // as a minimum over directions d_s, |d_s| = l0_s, of sum_s k_s/2 |x_i - x_j - d_s|^2, which makes the global
+  // step one constant linear system.
+  std::vector<const springs::SpringBlock*> spring_blocks;
   int lg_components = 1;     // 1: the system acts on DOFs; dim: one per-node matrix for all axes (Kronecker)
   SparseMatrix lg_a;         // M/dt^2 + D/dt + L, unconstrained
   SparseCholesky lg_factor;  // of lg_a with the fixed unknowns' rows and columns replaced by the identity's
@@ -420,7 +417,7 @@ struct Simulator::Impl {
       if (!s)
         throw InvalidArgument("local-global needs a spring-only model; this one has a '" + std::string(b->name()) +
                               "' block (use implicit-euler)");
-      springs.blocks.push_back(s);
+      spring_blocks.push_back(s);
     }
     lg_rhs0.setZero(nd);
     lg_jd.setZero(nd);
@@ -437,7 +434,7 @@ struct Simulator::Impl {
     lg_components = kronecker ? d : 1;
     const int r = lg_components, n = static_cast<int>(nd) / r, axes = d / r;
     std::vector<Triplet> t;
-    for (const springs::SpringBlock* b : springs.blocks)
+    for (const springs::SpringBlock* b : spring_blocks)
       for (size_t s = 0; s < b->pairs().size(); ++s) {
         const int i = b->pairs()[s][0], j = b->pairs()[s][1];
         const double k = b->stiffness()(static_cast<Eigen::Index>(s));
@@ -479,7 +476,7 @@ struct Simulator::Impl {
     for (int it = 0; it < opt.local_global_iterations; ++it) {
       // Local step (Liu et al. 2013): each spring's best direction d_s = l0_s (y_i - y_j)/|y_i - y_j|, as J d.
       lg_jd.setZero();
-      for (const springs::SpringBlock* b : springs.blocks) b->add_rest_directions(y, lg_jd);
+      for (const springs::SpringBlock* b : spring_blocks) b->add_rest_directions(y, lg_jd);
       for (Eigen::Index i = 0; i < nd; ++i) rhs(i) = fixed(i) ? y(i) : lg_rhs0(i) + lg_jd(i);
       lg_factor.solve_in_place(rhs.data(), lg_components);  // global step
       y = rhs;

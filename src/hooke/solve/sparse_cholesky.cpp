@@ -108,7 +108,7 @@ void supernodal_solve(const cholmod_factor& l, double* b, double* w, double* t) 
     for (int r = 0; r < R; ++r) b[R * perm[k] + r] = w[R * k + r];
 }
 
-// Eigen's CHOLMOD wrapper with access to its factor, to copy it into simplicial form.
+// Eigen's CHOLMOD wrapper with access to its factor, for the allocation-free supernodal solve.
 class CholmodLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
  public:
   cholmod_factor* factor() const { return m_cholmodFactor; }
@@ -157,7 +157,7 @@ struct SimplicialFactor {
 
 struct SparseCholesky::Impl {
   CholeskyBackend requested, backend;
-  mutable CholmodLLT cholmod;  // mutable: Eigen gives its cholmod_common through a non-const accessor
+  CholmodLLT cholmod;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
   Eigen::Index rows = -1, nonzeros = -1;
   bool analyzed = false, ok = false;
@@ -179,49 +179,33 @@ struct SparseCholesky::Impl {
     if (nrhs == 3) supernodal_solve<3>(l, b, w, t);
   }
 
-  // Copies the current factor into `simplicial` (LL^T, P A P^T).
+  // Copies Eigen's current factor into `simplicial` (LL^T of P A P^T). @pre backend == kEigen
   void extract() const {
     SimplicialFactor& f = simplicial;
-    if (backend == CholeskyBackend::kCholmod) {
-      cholmod_common& c = cholmod.cholmod();
-      cholmod_factor* l = cholmod_copy_factor(cholmod.factor(), &c);
-      if (!l || !cholmod_change_factor(CHOLMOD_REAL, 1, 0, 1, 1, l, &c)) {
-        if (l) cholmod_free_factor(&l, &c);
-        throw SolverFailure("CHOLMOD could not convert its factor to simplicial form (out of memory?)");
-      }
-      const auto n = static_cast<size_t>(l->n);
-      const int* p = static_cast<const int*>(l->p);
-      f.start.assign(p, p + n + 1);
-      f.row.assign(static_cast<const int*>(l->i), static_cast<const int*>(l->i) + p[n]);
-      f.value.assign(static_cast<const double*>(l->x), static_cast<const double*>(l->x) + p[n]);
-      f.old_of_new.assign(static_cast<const int*>(l->Perm), static_cast<const int*>(l->Perm) + n);
-      cholmod_free_factor(&l, &c);
-    } else {
-      // Eigen keeps L unit lower (diagonal not stored) and D; LL^T form: columns of L scaled by sqrt(D).
-      const auto& lower = ldlt.matrixL().nestedExpression();
-      const VecX& d = ldlt.vectorD();
-      const auto n = static_cast<size_t>(lower.cols());
-      f.start.assign(1, 0);
-      f.row.clear();
-      f.value.clear();
-      for (Eigen::Index j = 0; j < lower.cols(); ++j) {
-        const double root = std::sqrt(d(j));
-        f.row.push_back(static_cast<int>(j));
-        f.value.push_back(root);
-        for (std::remove_cvref_t<decltype(lower)>::InnerIterator it(lower, j); it; ++it)
-          if (it.row() > j) {
-            f.row.push_back(static_cast<int>(it.row()));
-            f.value.push_back(it.value() * root);
-          }
-        f.start.push_back(static_cast<int>(f.row.size()));
-      }
-      f.old_of_new.resize(n);
-      const auto& p = ldlt.permutationP().indices();  // Eigen factors P A P^T with (P b)(p(i)) = b(i)
-      if (p.size() == 0)
-        for (size_t i = 0; i < n; ++i) f.old_of_new[i] = static_cast<int>(i);
-      else
-        for (Eigen::Index i = 0; i < p.size(); ++i) f.old_of_new[static_cast<size_t>(p(i))] = static_cast<int>(i);
+    // Eigen keeps L unit lower (diagonal not stored) and D; LL^T form: columns of L scaled by sqrt(D).
+    const auto& lower = ldlt.matrixL().nestedExpression();
+    const VecX& d = ldlt.vectorD();
+    const auto n = static_cast<size_t>(lower.cols());
+    f.start.assign(1, 0);
+    f.row.clear();
+    f.value.clear();
+    for (Eigen::Index j = 0; j < lower.cols(); ++j) {
+      const double root = std::sqrt(d(j));
+      f.row.push_back(static_cast<int>(j));
+      f.value.push_back(root);
+      for (std::remove_cvref_t<decltype(lower)>::InnerIterator it(lower, j); it; ++it)
+        if (it.row() > j) {
+          f.row.push_back(static_cast<int>(it.row()));
+          f.value.push_back(it.value() * root);
+        }
+      f.start.push_back(static_cast<int>(f.row.size()));
     }
+    f.old_of_new.resize(n);
+    const auto& p = ldlt.permutationP().indices();  // Eigen factors P A P^T with (P b)(p(i)) = b(i)
+    if (p.size() == 0)
+      for (size_t i = 0; i < n; ++i) f.old_of_new[i] = static_cast<int>(i);
+    else
+      for (Eigen::Index i = 0; i < p.size(); ++i) f.old_of_new[static_cast<size_t>(p(i))] = static_cast<int>(i);
     extracted = true;
   }
 };
@@ -279,12 +263,6 @@ void SparseCholesky::solve_in_place(double* b, int nrhs) const {
     case 3: m_impl->simplicial.solve<3>(b); break;
     default: break;
   }
-}
-
-Eigen::Index SparseCholesky::factor_nonzeros() const {
-  if (!m_impl->ok) return 0;
-  if (!m_impl->extracted) m_impl->extract();
-  return static_cast<Eigen::Index>(m_impl->simplicial.value.size());
 }
 
 std::string_view SparseCholesky::backend_name() const {

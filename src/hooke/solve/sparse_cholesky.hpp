@@ -31,8 +31,6 @@ class SparseCholesky {
   /// solves on CHOLMOD's supernodal factor, or on a copy of Eigen's factor made at the first call after a
   /// factorisation. Allocates nothing after the first call. @pre factorize() returned true
   void solve_in_place(double* b, int nrhs) const;
-  /// Entries of the triangular factor of the last factorisation (its memory and solve cost).
-  Eigen::Index factor_nonzeros() const;
   /// "cholmod" or "eigen-ldlt".
   std::string_view backend_name() const;
 
