@@ -27,9 +27,10 @@ namespace {
 
 struct SimulateCli {
   ModelInput in;
-  std::string method = "lloyd-tet", law = "stvk", integrator = "implicit-euler", linear_solver = "cholesky", out_dir;
+  std::string method = "lloyd-tet", law = "stvk", integrator = "implicit-euler", linear_solver = "cholesky",
+              global_solve = "direct", out_dir;
   double density = 1000.0, dt = 1e-3, damping_mass = 0.0, damping_stiffness = 0.0;
-  int steps = 100, every = 0, probe_node = -1;
+  int steps = 100, every = 0, probe_node = -1, iterations = 10;
   bool gravity = false, free_body = false, no_reorder = false;
   std::vector<double> probe_offset, probe_force;
 };
@@ -81,6 +82,9 @@ int run_simulate(const SimulateCli& o) {
   solve::SimulatorOptions so;
   so.integrator = solve::integrator_from_name(o.integrator);
   so.linear_solver = solve::newton_linear_solver_from_name(o.linear_solver);
+  so.global_solve = solve::global_solve_from_name(o.global_solve);
+  if (o.iterations < 1) throw InvalidArgument("--iterations must be at least 1");
+  so.local_global_iterations = o.iterations;
   solve::Simulator sim(problem, dyn, so);
   solve::Probe probe;
   if (o.probe_node >= 0) {
@@ -178,6 +182,10 @@ Action add_simulate_command(CLI::App& app) {
                   "symplectic-euler, velocity-verlet, implicit-euler, local-global, quasi-static")
       ->capture_default_str();
   cmd->add_option("--linear-solver", o->linear_solver, "Newton steps: cholesky or cg")->capture_default_str();
+  cmd->add_option("--global-solve", o->global_solve,
+                  "local-global: direct (prefactored Cholesky) or chebyshev (Chebyshev-accelerated Jacobi)")
+      ->capture_default_str();
+  cmd->add_option("--iterations", o->iterations, "local-global: iterations per step")->capture_default_str();
   cmd->add_option("--dt", o->dt, "Time step, s")->capture_default_str();
   cmd->add_option("--steps", o->steps, "Number of steps")->capture_default_str();
   cmd->add_option("--density", o->density, "Density, kg/m^3")->capture_default_str();

@@ -64,13 +64,15 @@ namespace {
 struct Case {
   Integrator integrator;
   NewtonLinearSolver linear_solver;
-  bool fem;  // StVK FEM model instead of lloyd-tet springs
+  bool fem;                // StVK FEM model instead of lloyd-tet springs
+  bool chebyshev = false;  // local-global with the Chebyshev-Jacobi global step
 };
 
 std::string case_name(const ::testing::TestParamInfo<Case>& info) {
   std::string name(integrator_name(info.param.integrator));
   if (info.param.linear_solver == NewtonLinearSolver::kConjugateGradient) name += "_cg";
   if (info.param.fem) name += "_fem";
+  if (info.param.chebyshev) name += "_chebyshev";
   for (char& c : name)
     if (c == '-') c = '_';
   return name;
@@ -100,6 +102,7 @@ TEST_P(StepAllocation, NoHeapAllocationAfterTheFirstStep) {
   SimulatorOptions options;
   options.integrator = c.integrator;
   options.linear_solver = c.linear_solver;
+  if (c.chebyshev) options.global_solve = GlobalSolve::kChebyshev;
   // Local/global's Kronecker form needs no stiffness damping; the others get both Rayleigh terms.
   Simulator sim(
       problem,
@@ -134,6 +137,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Case{Integrator::kSymplecticEuler, NewtonLinearSolver::kCholesky, false},
                       Case{Integrator::kVelocityVerlet, NewtonLinearSolver::kCholesky, false},
                       Case{Integrator::kLocalGlobal, NewtonLinearSolver::kCholesky, false},
+                      Case{Integrator::kLocalGlobal, NewtonLinearSolver::kCholesky, false, true},
                       Case{Integrator::kImplicitEuler, NewtonLinearSolver::kConjugateGradient, false},
                       Case{Integrator::kQuasiStatic, NewtonLinearSolver::kConjugateGradient, false},
                       Case{Integrator::kImplicitEuler, NewtonLinearSolver::kConjugateGradient, true},

@@ -80,19 +80,29 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
     VecX gravity = VecX::Zero(3);
     gravity(2) = -9.81;
     const solve::Dynamics dynamics{model::lumped_masses(m, 1000.0), gravity, 0.0, 0.0};
-    for (solve::Integrator integrator :
-         {solve::Integrator::kSymplecticEuler, solve::Integrator::kVelocityVerlet, solve::Integrator::kImplicitEuler,
-          solve::Integrator::kLocalGlobal, solve::Integrator::kQuasiStatic}) {
+    // local-global twice: with its prefactored direct global step and with the Chebyshev-Jacobi one.
+    const std::pair<solve::Integrator, solve::GlobalSolve> runs[] = {
+        {solve::Integrator::kSymplecticEuler, solve::GlobalSolve::kDirect},
+        {solve::Integrator::kVelocityVerlet, solve::GlobalSolve::kDirect},
+        {solve::Integrator::kImplicitEuler, solve::GlobalSolve::kDirect},
+        {solve::Integrator::kLocalGlobal, solve::GlobalSolve::kDirect},
+        {solve::Integrator::kLocalGlobal, solve::GlobalSolve::kChebyshev},
+        {solve::Integrator::kQuasiStatic, solve::GlobalSolve::kDirect}};
+    for (const auto& [integrator, global_solve] : runs) {
+      std::string name(solve::integrator_name(integrator));
+      if (integrator == solve::Integrator::kLocalGlobal)
+        name += global_solve == solve::GlobalSolve::kChebyshev ? " (chebyshev)" : " (direct)";
       const bool newton =
           integrator == solve::Integrator::kImplicitEuler || integrator == solve::Integrator::kQuasiStatic;
       if (newton && size == 2) {
-        report.notes.push_back(std::string(solve::integrator_name(integrator)) + " skipped on " +
-                               std::to_string(m.node_count()) + " nodes (a sparse factorisation of " +
-                               std::to_string(3 * m.node_count()) + " DOFs per Newton matrix)");
+        report.notes.push_back(name + " skipped on " + std::to_string(m.node_count()) +
+                               " nodes (a sparse factorisation of " + std::to_string(3 * m.node_count()) +
+                               " DOFs per Newton matrix)");
         continue;
       }
       solve::SimulatorOptions o;
       o.integrator = integrator;
+      o.global_solve = global_solve;
       solve::Simulator sim(problem, dynamics, o);
       const bool explicit_step =
           integrator == solve::Integrator::kSymplecticEuler || integrator == solve::Integrator::kVelocityVerlet;
@@ -105,8 +115,8 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
         iterations += sim.step(dt).iterations;
         ms.push_back(ms_since(t0));
       }
-      report.steps.push_back({m.node_count(), std::string(solve::integrator_name(integrator)), dt, quantile(ms, 0.5),
-                              quantile(ms, 0.95), iterations / options.steps});
+      report.steps.push_back(
+          {m.node_count(), name, dt, quantile(ms, 0.5), quantile(ms, 0.95), iterations / options.steps});
     }
   }
   return report;

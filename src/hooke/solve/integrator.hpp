@@ -32,4 +32,15 @@ enum class NewtonLinearSolver {
 
 NewtonLinearSolver newton_linear_solver_from_name(std::string_view name);  ///< @throws InvalidArgument
 
+/// How local-global solves its global linear system each iteration.
+enum class GlobalSolve {
+  kDirect,    ///< "direct": one prefactored sparse Cholesky solve (Liu et al. 2013): each iteration is exact
+  kChebyshev  ///< "chebyshev": one Jacobi sweep per iteration, accelerated by Chebyshev's semi-iterative method
+              ///< (Wang 2015, "A Chebyshev Semi-Iterative Approach for Accelerating Projective and Position-based
+              ///< Dynamics"): O(springs) per iteration, no factorisation; information travels a few springs per
+              ///< iteration, so large meshes need more iterations (or steps) to reach the same state
+};
+
+GlobalSolve global_solve_from_name(std::string_view name);  ///< @throws InvalidArgument
+
 }  // namespace hooke::solve

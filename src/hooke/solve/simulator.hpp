@@ -18,10 +18,14 @@ struct Dynamics {
 struct SimulatorOptions {
   Integrator integrator = Integrator::kImplicitEuler;
   NewtonLinearSolver linear_solver = NewtonLinearSolver::kCholesky;
-  int max_newton_iterations = 60;    ///< implicit-euler, quasi-static: per step
-  double newton_tolerance = 1e-9;    ///< stop when |grad| <= tolerance x the step's force scale
-  int local_global_iterations = 10;  ///< local-global: iterations per step (Liu et al. use about 10)
-  bool project_psd = true;           ///< project element Hessians to PSD in Newton steps
+  int max_newton_iterations = 60;                   ///< implicit-euler, quasi-static: per step
+  double newton_tolerance = 1e-9;                   ///< stop when |grad| <= tolerance x the step's force scale
+  int local_global_iterations = 10;                 ///< local-global: iterations per step (Liu et al. use about 10)
+  GlobalSolve global_solve = GlobalSolve::kDirect;  ///< local-global: the global step's linear solver
+  /// local-global with chebyshev: false = plain Jacobi sweeps (for comparison; may be unstable for odd iteration
+  /// counts, docs/simulation.md)
+  bool chebyshev_acceleration = true;
+  bool project_psd = true;  ///< project element Hessians to PSD in Newton steps
   /// implicit-euler, quasi-static with Cholesky: reuse the last factorisation (modified Newton) while it reduces
   /// the residual fourfold per iteration; refactorise otherwise
   bool reuse_factorization = true;
