@@ -52,6 +52,27 @@ TEST(StaticEquilibrium, LinearLawNewtonEqualsLinearSolve) {
   EXPECT_LE(newton.report.iterations, 2 * newton.report.load_steps);
 }
 
+// An initial guess near the answer replaces load stepping (one load step, few iterations, the same state);
+// a useless guess (far off) falls back to load stepping from rest; a wrong size is an error.
+TEST(StaticEquilibrium, InitialGuessIsUsedWhenItConverges) {
+  const model::Problem p = loaded(column3d(), Law::kNeoHookean, LoadKind::kStretch, 400.0);
+  const auto plain = static_equilibrium(p);
+  require_converged(plain.report);
+  NewtonOptions o;
+  o.start = plain.positions + VecX::Constant(plain.positions.size(), 1e-7);
+  const auto warm = static_equilibrium(p, o);
+  require_converged(warm.report);
+  EXPECT_EQ(warm.report.load_steps, 1);
+  EXPECT_LT(warm.report.iterations, plain.report.iterations);
+  EXPECT_LT((warm.positions - plain.positions).norm(), 1e-9 * plain.positions.norm());
+  o.start = VecX::Constant(plain.positions.size(), std::nan(""));
+  const auto fallback = static_equilibrium(p, o);
+  require_converged(fallback.report);
+  EXPECT_LT((fallback.positions - plain.positions).norm(), 1e-9 * plain.positions.norm());
+  o.start = VecX::Zero(3);
+  EXPECT_THROW(static_equilibrium(p, o), InvalidArgument);
+}
+
 TEST(StaticEquilibrium, InvariantUnderRigidRotationOfMeshAndLoad) {
   const mesh::Mesh& m = column3d();
   const Mat3 r = test::random_rotation(4);

@@ -11,6 +11,12 @@ Model::Model(int dim, VecX rest_positions) : m_dim(dim), m_rest(std::move(rest_p
 
 void Model::add(std::unique_ptr<TermBlock> block) { m_blocks.push_back(std::move(block)); }
 
+bool Model::conservative() const {
+  for (const auto& b : m_blocks)
+    if (!b->conservative()) return false;
+  return true;
+}
+
 double Model::energy(const Eigen::Ref<const VecX>& x) const {
   double e = 0.0;
   for (const auto& b : m_blocks) e += b->energy(x);

@@ -23,6 +23,8 @@ class Model {
   const VecX& rest_positions() const { return m_rest; }
   const std::vector<std::unique_ptr<TermBlock>>& blocks() const { return m_blocks; }
 
+  /// True when every block is conservative (TermBlock::conservative): the forces are -dE/dx.
+  bool conservative() const;
   /// Total elastic energy at x, J.
   double energy(const Eigen::Ref<const VecX>& x) const;
   /// dE/dx at x, N.

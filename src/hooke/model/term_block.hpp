@@ -14,6 +14,10 @@ class TermBlock {
   virtual ~TermBlock() = default;
   /// Stable name for reports ("fem", "springs", ...).
   virtual std::string_view name() const = 0;
+  /// True when add_gradient is the gradient of energy (the default). A non-conservative block's forces have no
+  /// potential: energy() is then only a reported measure, add_hessian_values a symmetric approximation of the
+  /// force Jacobian, and solvers must not minimise the energy (they drive the force residual to zero instead).
+  virtual bool conservative() const { return true; }
   /// Stored elastic energy at x, J. +infinity where x is outside the block's domain (an inverted element).
   virtual double energy(const Eigen::Ref<const VecX>& x) const = 0;
   /// Adds dE/dx at x (N) to `gradient` (same size as x).

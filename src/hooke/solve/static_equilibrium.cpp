@@ -88,9 +88,24 @@ struct NewtonState {
         for (int i = 0; i < map.size(); ++i) t(map.free[static_cast<size_t>(i)]) += alpha * d(i);
         return t;
       };
-      const double pi0 = model::potential_energy(problem, x, lambda);
       double alpha = 1.0;
       bool accepted = false;
+      if (!problem.model->conservative()) {
+        // No potential (e.g. the surface model's blended anchors): backtrack on the residual norm, with the
+        // blocks' symmetric Jacobian approximations as the Newton matrix (a quasi-Newton iteration).
+        for (int ls = 0; ls < 40 && !accepted; ++ls, alpha *= 0.5) {
+          const VecX t = trial_at(alpha);
+          double s = 0.0;
+          const double rt = residual(t, lambda, s).norm();
+          if (std::isfinite(rt) && rt <= (1.0 - 1e-4 * alpha) * rnorm) {
+            x = t;
+            accepted = true;
+          }
+        }
+        if (!accepted) return false;
+        continue;
+      }
+      const double pi0 = model::potential_energy(problem, x, lambda);
       for (int ls = 0; ls < 40; ++ls, alpha *= 0.5) {
         const VecX t = trial_at(alpha);
         const double pi = model::potential_energy(problem, t, lambda);
@@ -218,6 +233,18 @@ StaticResult static_equilibrium(const model::Problem& problem, const NewtonOptio
                   "the tangent stiffness at the start is not positive definite: the body is "
                   "not held against rigid motion, or starts in an unstable state");
 
+  if (options.start.size() > 0) {
+    if (options.start.size() != m.dof_count())
+      throw InvalidArgument("static_equilibrium: the initial guess has " + std::to_string(options.start.size()) +
+                            " entries, the model " + std::to_string(m.dof_count()) + " DOFs");
+    VecX x = x_stable;
+    for (const int i : map.free) x(i) = options.start(i);
+    if (x.allFinite() && newton.solve_step(x, 1.0) && (!options.check_stability || newton.stable_at(x))) {
+      x_stable = std::move(x);
+      lambda_stable = 1.0;
+      ++rep.load_steps;
+    }
+  }
   while (lambda_stable < 1.0) {
     const double lambda = std::min(1.0, lambda_stable + step);
     VecX x = x_stable;

@@ -66,6 +66,10 @@ struct NewtonOptions {
   int bisection_steps = 7;        ///< refinements of the critical load factor, default 7
   bool project_psd = false;       ///< project element Hessians to PSD (robust, slower convergence), default false
   CholeskyBackend backend = CholeskyBackend::kAuto;  ///< sparse factorisation
+  /// Optional initial guess at the full load (flat positions, m, size dof_count; prescribed DOFs are taken
+  /// from the problem): Newton is tried from it first, and load stepping from rest only if that fails. Empty
+  /// (default): load stepping from rest.
+  VecX start;
 };
 
 /// Newton's method with backtracking (Armijo) line search on Pi(x) = E(x) - lambda f.(x - X), load
@@ -73,6 +77,8 @@ struct NewtonOptions {
 /// indefinite. Every accepted state is checked for stability (the tangent on the free DOFs must be
 /// positive definite); when stability is lost, the critical load factor is bracketed by bisection and the
 /// last stable state is returned with status kUnstable: an unstable equilibrium is never the answer.
+/// A model with non-conservative blocks (Model::conservative() false) has no potential: its line search
+/// backtracks on the residual norm instead, with the blocks' symmetric Jacobian approximations.
 StaticResult static_equilibrium(const model::Problem& problem, const NewtonOptions& options = {});
 
 }  // namespace hooke::solve
