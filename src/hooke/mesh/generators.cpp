@@ -4,6 +4,7 @@
 #include <hooke/core/error.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <map>
+#include <numbers>
 #include <vector>
 
 namespace hooke::mesh {
@@ -193,6 +194,31 @@ Mesh cube_surface(int n, double size) {
     }
   }
   return make_mesh(ElementKind::kSurfaceTriangle, to_rows(xyz, 3), to_rows(tri, 3), "cube surface");
+}
+
+Mesh uv_sphere_surface(int rings, int segments, double radius) {
+  if (rings < 2 || segments < 3 || !(radius > 0.0))
+    throw InvalidArgument("uv_sphere_surface: rings >= 2, segments >= 3 and radius > 0 required");
+  std::vector<double> xyz{0.0, 0.0, radius};
+  for (int r = 1; r < rings; ++r) {
+    const double theta = std::numbers::pi * r / rings;
+    for (int s = 0; s < segments; ++s) {
+      const double phi = 2.0 * std::numbers::pi * s / segments;
+      xyz.insert(xyz.end(), {radius * std::sin(theta) * std::cos(phi), radius * std::sin(theta) * std::sin(phi),
+                             radius * std::cos(theta)});
+    }
+  }
+  xyz.insert(xyz.end(), {0.0, 0.0, -radius});
+  const int south = 1 + (rings - 1) * segments;
+  auto at = [&](int r, int s) { return 1 + (r - 1) * segments + (s % segments); };  // r in 1 .. rings-1
+  std::vector<int> tri;
+  for (int s = 0; s < segments; ++s) {
+    tri.insert(tri.end(), {0, at(1, s), at(1, s + 1)});
+    for (int r = 1; r + 1 < rings; ++r)
+      tri.insert(tri.end(), {at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s), at(r + 1, s + 1), at(r, s + 1)});
+    tri.insert(tri.end(), {at(rings - 1, s), south, at(rings - 1, s + 1)});
+  }
+  return make_mesh(ElementKind::kSurfaceTriangle, to_rows(xyz, 3), to_rows(tri, 3), "uv sphere");
 }
 
 }  // namespace hooke::mesh

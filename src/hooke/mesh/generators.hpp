@@ -46,5 +46,11 @@ Mesh tet_cylinder(double radius, double height, int n, int layers);
 /// oriented with outward normals: 6 n^2 + 2 nodes (602, 1352, 2402 for n = 10, 15, 20), 12 n^2 triangles.
 /// @pre n >= 1, size > 0 (m)
 Mesh cube_surface(int n, double size);
+/// Closed surface of the sphere of `radius` (m) about the origin: `rings` bands of latitude and `segments`
+/// meridians, triangles fanned at the poles and two per cell elsewhere, outward oriented. 2 + (rings - 1)
+/// segments nodes (rings 26, segments 40: 1 002, the "sphere (1000 nodes)" of Arnab & Raja's Table 2); the
+/// triangles shrink towards the poles: an irregular mesh topology.
+/// @pre rings >= 2, segments >= 3, radius > 0
+Mesh uv_sphere_surface(int rings, int segments, double radius);
 
 }  // namespace hooke::mesh

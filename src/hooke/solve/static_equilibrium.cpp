@@ -71,6 +71,7 @@ struct NewtonState {
       for (int k = 0; !ok && k < 30; ++k, tau *= 10.0) ok = factorize(SparseMatrix(h + tau * identity));
       if (!ok) return false;
       VecX d = -chol.solve(r);
+      if (!problem.model->conservative()) refine_step(x, lambda, r, d);
       double slope = r.dot(d);
       if (!(slope < 0.0)) {
         d = -r;
@@ -129,6 +130,47 @@ struct NewtonState {
     double scale = 0.0;
     report.residual = residual(x, lambda, scale).norm();
     return report.residual <= options.tolerance * std::max(scale, 1e-300);
+  }
+
+  // Without a potential the assembled matrix S is only the symmetric part of the blocks' Jacobians (and drops
+  // global rank-one couplings): solve J d = -r by GMRES (Saad, Iterative Methods, Alg. 6.9) right-
+  // preconditioned with S^-1 (the existing factor), J v from a forward difference of the residual (one force
+  // evaluation per iteration), to |r + J d| <= 1e-6 |r| or 40 iterations; keeps the plain S^-1 step when that
+  // is better.
+  void refine_step(const VecX& x, double lambda, const VecX& r, VecX& d) {
+    const double beta = r.norm();
+    if (!(beta > 0.0)) return;
+    auto jacobian_times = [&](const VecX& v) {
+      const double vmax = v.cwiseAbs().maxCoeff();
+      if (!(vmax > 0.0)) return VecX(VecX::Zero(v.size()));
+      const double eps = 1e-7 * size / vmax;
+      VecX t = x;
+      for (int i = 0; i < map.size(); ++i) t(map.free[static_cast<size_t>(i)]) += eps * v(i);
+      double s = 0.0;
+      return VecX((residual(t, lambda, s) - r) / eps);
+    };
+    const int m = std::min(40, map.size());
+    Eigen::MatrixXd basis(map.size(), m + 1), hess = Eigen::MatrixXd::Zero(m + 1, m);
+    basis.col(0) = -r / beta;
+    Eigen::VectorXd best;
+    for (int k = 0; k < m; ++k) {
+      VecX w = jacobian_times(chol.solve(basis.col(k)));
+      for (int i = 0; i <= k; ++i) {
+        hess(i, k) = basis.col(i).dot(w);
+        w -= hess(i, k) * basis.col(i);
+      }
+      hess(k + 1, k) = w.norm();
+      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(k + 2);
+      rhs(0) = beta;
+      const Eigen::MatrixXd h = hess.topLeftCorner(k + 2, k + 1);
+      best = h.colPivHouseholderQr().solve(rhs);
+      const double defect = (h * best - rhs).norm();
+      if (!(hess(k + 1, k) > 1e-14 * beta) || defect <= 1e-6 * beta) break;
+      basis.col(k + 1) = w / hess(k + 1, k);
+    }
+    if (best.size() == 0 || !best.allFinite()) return;
+    const VecX candidate = chol.solve(VecX(basis.leftCols(best.size()) * best));
+    if ((r + jacobian_times(candidate)).norm() < (r + jacobian_times(d)).norm()) d = candidate;
   }
 
   // Positive definiteness of the tangent on the free DOFs at x.

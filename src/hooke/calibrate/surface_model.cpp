@@ -1,0 +1,114 @@
+#include <cctype>
+#include <hooke/calibrate/surface_model.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/mesh/topology.hpp>
+#include <hooke/springs/spring_block.hpp>
+#include <map>
+
+namespace hooke::calibrate {
+
+std::string_view surface_scheme_name(SurfaceScheme scheme) {
+  switch (scheme) {
+    case SurfaceScheme::kA: return "A";
+    case SurfaceScheme::kB: return "B";
+    case SurfaceScheme::kC: return "C";
+    case SurfaceScheme::kD: return "D";
+  }
+  return "?";
+}
+
+SurfaceScheme surface_scheme_from_name(std::string_view name) {
+  for (SurfaceScheme s : {SurfaceScheme::kA, SurfaceScheme::kB, SurfaceScheme::kC, SurfaceScheme::kD})
+    if (name.size() == 1 && std::toupper(static_cast<unsigned char>(name[0])) == surface_scheme_name(s)[0]) return s;
+  throw InvalidArgument("unknown surface scheme '" + std::string(name) + "' (A, B, C, D)");
+}
+
+namespace {
+
+// Membrane springs on the surface edges, Lloyd et al. 2007 Eq. 9: k_ij = sum over the (two) triangles t of
+// the edge of E t A_t / l_ij^2 (Eq. 8's sqrt(3)/4 E t scaled by A_t / A_0, A_0 = sqrt(3)/4 l^2).
+std::unique_ptr<springs::SpringBlock> membrane(const mesh::Mesh& m, double youngs_modulus, double thickness) {
+  std::map<std::array<int, 2>, double> k;
+  for (int t = 0; t < m.element_count(); ++t) {
+    const Vec3 a = m.nodes.row(m.elements(t, 0)).transpose(), b = m.nodes.row(m.elements(t, 1)).transpose(),
+               c = m.nodes.row(m.elements(t, 2)).transpose();
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    for (int e = 0; e < 3; ++e) {
+      const int i = m.elements(t, e), j = m.elements(t, (e + 1) % 3);
+      const double l2 = (m.nodes.row(i) - m.nodes.row(j)).squaredNorm();
+      k[{std::min(i, j), std::max(i, j)}] += youngs_modulus * thickness * area / l2;
+    }
+  }
+  std::vector<std::array<int, 2>> pairs;
+  VecX stiffness(static_cast<Eigen::Index>(k.size())), rest(static_cast<Eigen::Index>(k.size()));
+  Eigen::Index s = 0;
+  for (const auto& [pair, ks] : k) {
+    pairs.push_back(pair);
+    stiffness(s) = ks;
+    rest(s) = (m.nodes.row(pair[0]) - m.nodes.row(pair[1])).norm();
+    ++s;
+  }
+  return std::make_unique<springs::SpringBlock>(3, std::move(pairs), std::move(stiffness), std::move(rest));
+}
+
+}  // namespace
+
+SurfaceModel make_surface_model(mesh::Mesh mesh, const material::Material& material, const SurfaceOptions& o) {
+  material::validate(material);
+  if (material.law != material::Law::kLinear)
+    throw InvalidArgument("the surface model is linear: its stiffnesses come from E and nu of a linear law");
+  SurfaceModel out;
+  out.check = surface::check_closed_surface(mesh);
+  const Vec3 centre = o.centre ? *o.centre : surface::volume_centroid(mesh);
+  surface::require_star_shaped(mesh, centre);
+  out.discretisation = surface::discretise(mesh, centre);
+  const surface::Discretisation& d = out.discretisation;
+  const int n = mesh.node_count();
+  const double e = material.youngs_modulus, nu = material.poisson_ratio;
+
+  // Masses (Sec. Mass Estimation): the estimation ratio, or uniform for scheme A.
+  const double total = o.mass > 0.0 ? o.mass : o.density * d.volume;
+  if (!(total > 0.0)) throw InvalidArgument("the object mass must be positive: give a density or a mass (kg)");
+  const VecX node_mass =
+      o.scheme == SurfaceScheme::kA ? VecX::Constant(n, total / n) : surface::estimated_masses(d, total);
+  out.masses.resize(3 * n);
+  for (int i = 0; i < n; ++i) out.masses.segment<3>(3 * i).setConstant(node_mass(i));
+
+  // Inner stiffness (Sec. The Estimation of Spring Stiffness): [K_E; K_G]_i = E sum V_t / L'^2 [1; shear],
+  // K_B,i = E / (3 (1 - 2 nu)) sum V_t / L'^2, with V_t and L' of Fig. 6 (see Discretisation::normal_length).
+  const VecX per_length = d.normal_volume.cwiseQuotient(d.normal_length.cwiseProduct(d.normal_length));
+  const double shear =
+      o.shear_factor == ShearFactor::kShearModulus ? 1.0 / (2.0 * (1.0 + nu)) : 1.0 / (2.0 * (1.0 - nu));
+  const double bulk = e / (3.0 * (1.0 - 2.0 * nu));
+  out.k_normal = e * per_length;
+  out.k_shear = shear * out.k_normal;
+  out.k_bulk = bulk * per_length;
+  if (o.scheme == SurfaceScheme::kA || o.scheme == SurfaceScheme::kB) {
+    out.k_normal.setConstant(out.k_normal.mean());
+    out.k_shear.setConstant(out.k_shear.mean());
+    out.k_bulk.setConstant(out.k_bulk.mean());
+  }
+  const surface::AnchorLaw law =
+      o.anchor_law ? *o.anchor_law
+                   : (o.scheme == SurfaceScheme::kD ? surface::AnchorLaw::kBlend : surface::AnchorLaw::kSingle);
+  const bool penalty = o.volume_penalty ? *o.volume_penalty : o.scheme == SurfaceScheme::kD;
+
+  out.membrane_thickness =
+      o.membrane_thickness >= 0.0 ? o.membrane_thickness : kDefaultThicknessRatio * d.normal_length.mean();
+  VecX rest = Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size());
+  out.model = std::make_shared<model::Model>(3, rest);
+  if (out.membrane_thickness > 0.0) out.model->add(membrane(mesh, e, out.membrane_thickness));
+  auto anchors = std::make_unique<surface::AnchorBlock>(rest, d.normals, out.k_normal, out.k_shear, law);
+  out.anchors = anchors.get();
+  out.model->add(std::move(anchors));
+  if (penalty) {
+    auto volume = std::make_unique<surface::VolumePenaltyBlock>(mesh.elements, d.volume, out.k_bulk, d.normal_length,
+                                                                bulk, o.volume_force);
+    out.volume = volume.get();
+    out.model->add(std::move(volume));
+  }
+  out.mesh = std::move(mesh);
+  return out;
+}
+
+}  // namespace hooke::calibrate

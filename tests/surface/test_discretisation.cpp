@@ -1,0 +1,68 @@
+// The radial discretisation (Arnab & Raja Fig. 5, 6) and the mass estimation ratio: masses sum to M for any
+// mesh and after a local refinement; the per-node volumes are exact on a cube.
+#include <gtest/gtest.h>
+
+#include <hooke/mesh/generators.hpp>
+#include <hooke/surface/closed_surface.hpp>
+#include <hooke/surface/discretisation.hpp>
+#include <hooke/surface/refine.hpp>
+
+namespace hooke::surface {
+namespace {
+
+Discretisation of(mesh::Mesh& m) {
+  check_closed_surface(m);
+  return discretise(m, volume_centroid(m));
+}
+
+TEST(Discretisation, RadialVolumesCountEachConeThreeTimes) {
+  for (mesh::Mesh m : {mesh::cube_surface(5, 0.1), mesh::uv_sphere_surface(12, 20, 0.05)}) {
+    const Discretisation d = of(m);
+    EXPECT_NEAR(d.radial_volume.sum(), 3.0 * d.volume, 1e-12 * d.volume);
+    EXPECT_GT(d.normal_length.minCoeff(), 0.0);
+    EXPECT_LE((d.normal_length - d.radial_length).maxCoeff(), 1e-15);  // L' <= L
+  }
+}
+
+// On a cube face every node's axis is the face's distance to the centre, and its Fig. 6 volume is its face area
+// share times that distance (each adjacent cone counted whole: A_i L' with A_i = sum_t A_t / 3 x 3).
+TEST(Discretisation, FaceNodesOfACubeSeeTheFaceDistance) {
+  mesh::Mesh m = mesh::cube_surface(4, 2.0);
+  const Discretisation d = of(m);
+  for (int i = 0; i < m.node_count(); ++i) {
+    const Vec3 p = m.nodes.row(i).transpose();
+    const int on_faces = (p.array() < 1e-12 || p.array() > 2.0 - 1e-12).count();
+    if (on_faces != 1) continue;  // edges and corners have averaged normals
+    EXPECT_NEAR(d.normal_length(i), 1.0, 1e-14);
+    EXPECT_NEAR(d.normal_volume(i), 6 * 0.5 * 0.5 * 0.5 / 3.0 * 1.0, 1e-14);  // six triangles of area 1/8
+  }
+}
+
+TEST(Discretisation, MassesSumToTheObjectMassAlsoAfterRefinement) {
+  mesh::Mesh sphere = mesh::uv_sphere_surface(10, 16, 0.05);
+  const Discretisation d = of(sphere);
+  const VecX m = estimated_masses(d, 0.7);
+  EXPECT_NEAR(m.sum(), 0.7, 1e-14);
+  EXPECT_GT(m.minCoeff(), 0.0);
+  mesh::Mesh refined = refine_near(sphere, Vec3(0.0, 0.0, 0.05), 0.02);
+  EXPECT_GT(refined.node_count(), sphere.node_count());
+  const Discretisation dr = of(refined);
+  EXPECT_NEAR(dr.volume, d.volume, 1e-12 * d.volume);  // midpoints stay on the flat edges
+  const VecX mr = estimated_masses(dr, 0.7);
+  EXPECT_NEAR(mr.sum(), 0.7, 1e-14);
+  // Away from the refinement the masses are unchanged; inside they are smaller (more nodes share the volume).
+  const int far = sphere.node_count() - 1;  // the south pole
+  EXPECT_NEAR(mr(far), m(far), 1e-12);
+  EXPECT_LT(mr(0), m(0));  // the north pole, in the refined area
+}
+
+TEST(Refine, ClosesConformingly) {
+  mesh::Mesh cube = mesh::cube_surface(4, 1.0);
+  mesh::Mesh r = refine_near(cube, Vec3(0.5, 0.5, 1.0), 0.3);
+  EXPECT_NO_THROW(check_closed_surface(r));  // closed and manifold: no hanging nodes
+  EXPECT_GT(r.element_count(), cube.element_count());
+  EXPECT_EQ(refine_near(cube, Vec3(5, 5, 5), 0.1).element_count(), cube.element_count());
+}
+
+}  // namespace
+}  // namespace hooke::surface
