@@ -1,6 +1,7 @@
-// hooke reproduce lloyd2007 [-o DIR] [--no-figures]: the experiments of Lloyd et al. 2007 with a report.
+// hooke reproduce lloyd2007|arnab2008 [-o DIR] [--no-figures]: a paper's experiments with a report.
 #include <cstdio>
 #include <hooke/core/error.hpp>
+#include <hooke/experiments/reproduce_arnab2008.hpp>
 #include <hooke/experiments/reproduce_lloyd2007.hpp>
 #include <memory>
 #include <string>
@@ -16,17 +17,33 @@ namespace hooke::cli {
 
 Action add_reproduce_command(CLI::App& app) {
   struct Options {
-    std::string paper, out_dir = "out/lloyd2007", mesh_dir = HOOKE_MESH_DIR;
+    std::string paper, out_dir, mesh_dir = HOOKE_MESH_DIR;
     bool no_figures = false;
   };
   auto o = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("reproduce", "Reproduce a paper's experiments and write a report");
-  cmd->add_option("paper", o->paper, "lloyd2007")->required();
-  cmd->add_option("-o,--output", o->out_dir, "Report folder")->capture_default_str();
+  cmd->add_option("paper", o->paper, "lloyd2007 or arnab2008")->required();
+  cmd->add_option("-o,--output", o->out_dir, "Report folder (default out/<paper>)");
   cmd->add_option("--meshes", o->mesh_dir, "Folder of the committed meshes")->capture_default_str();
   cmd->add_flag("--no-figures", o->no_figures, "Write the figure specs (JSON) but do not run matplotlib");
   return [o] {
-    if (o->paper != "lloyd2007") throw InvalidArgument("unknown paper '" + o->paper + "' (available: lloyd2007)");
+    if (o->out_dir.empty()) o->out_dir = "out/" + o->paper;
+    if (o->paper == "arnab2008") {
+      const auto report = experiments::reproduce_arnab2008();
+      experiments::write_arnab2008_report(o->out_dir, report);
+      for (const auto& row : report.table1)
+        std::printf("Table 1: cube %4d nodes, E %6g Pa: scheme D %8.2f Pa (%+.2f %%), paper %g Pa\n", row.nodes,
+                    row.youngs_modulus, row.extracted_d, row.deviation_percent, row.paper);
+      for (const auto& row : report.table2)
+        std::printf("Table 2: %-12s surface %7.0f steps/s, volume %7.0f steps/s (dt %.3g ms); paper %g / %g FPS\n",
+                    row.model.c_str(), row.surface_steps_per_second, row.volume_steps_per_second, row.dt * 1e3,
+                    row.paper_surface_fps, row.paper_volume_fps);
+      std::printf("experiments: %.1f s\nwrote %s/arnab2008.md and arnab2008.json\n", report.seconds,
+                  o->out_dir.c_str());
+      return 0;
+    }
+    if (o->paper != "lloyd2007")
+      throw InvalidArgument("unknown paper '" + o->paper + "' (available: lloyd2007, arnab2008)");
     const auto report = experiments::reproduce_lloyd2007(o->mesh_dir);
     experiments::write_lloyd2007_report(o->out_dir, report);
     for (const auto& c : report.cases)

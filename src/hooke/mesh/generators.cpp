@@ -1,5 +1,7 @@
 #include <hooke/mesh/generators.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/mesh/measure.hpp>
@@ -219,6 +221,39 @@ Mesh uv_sphere_surface(int rings, int segments, double radius) {
     tri.insert(tri.end(), {at(rings - 1, s), south, at(rings - 1, s + 1)});
   }
   return make_mesh(ElementKind::kSurfaceTriangle, to_rows(xyz, 3), to_rows(tri, 3), "uv sphere");
+}
+
+Mesh tetrahedralise_radially(const Mesh& surface, const Vec3& centre, int layers) {
+  if (surface.kind != ElementKind::kSurfaceTriangle || layers < 1)
+    throw InvalidArgument("tetrahedralise_radially needs a triangle surface and layers >= 1");
+  const int n = surface.node_count();
+  RowMatX nodes(1 + layers * n, 3);
+  nodes.row(0) = centre.transpose();
+  for (int k = 1; k <= layers; ++k)
+    for (int i = 0; i < n; ++i)
+      nodes.row(1 + (k - 1) * n + i) = centre.transpose() + (surface.nodes.row(i) - centre.transpose()) * k / layers;
+  auto at = [&](int k, int i) { return 1 + (k - 1) * n + i; };  // layer k >= 1
+  std::vector<std::array<int, 4>> tets;
+  for (int t = 0; t < surface.element_count(); ++t) {
+    std::array<int, 3> v{surface.elements(t, 0), surface.elements(t, 1), surface.elements(t, 2)};
+    tets.push_back({0, at(1, v[0]), at(1, v[1]), at(1, v[2])});
+    std::sort(v.begin(), v.end());  // the diagonal of each side face then runs the same way in both prisms
+    for (int k = 1; k < layers; ++k) {
+      const int i0 = at(k, v[0]), j0 = at(k, v[1]), k0 = at(k, v[2]);
+      const int i1 = at(k + 1, v[0]), j1 = at(k + 1, v[1]), k1 = at(k + 1, v[2]);
+      tets.push_back({i0, j0, k0, i1});
+      tets.push_back({j0, k0, i1, j1});
+      tets.push_back({k0, i1, j1, k1});
+    }
+  }
+  RowMatXi elements(static_cast<Eigen::Index>(tets.size()), 4);
+  for (size_t e = 0; e < tets.size(); ++e) {
+    auto& q = tets[e];
+    const auto p = [&](int a) { return Vec3(nodes.row(q[static_cast<size_t>(a)]).transpose()); };
+    if (signed_volume(p(0), p(1), p(2), p(3)) < 0.0) std::swap(q[2], q[3]);
+    elements.row(static_cast<Eigen::Index>(e)) << q[0], q[1], q[2], q[3];
+  }
+  return make_mesh(ElementKind::kTet, std::move(nodes), std::move(elements), "radial tetrahedralisation");
 }
 
 }  // namespace hooke::mesh

@@ -52,5 +52,12 @@ Mesh cube_surface(int n, double size);
 /// triangles shrink towards the poles: an irregular mesh topology.
 /// @pre rings >= 2, segments >= 3, radius > 0
 Mesh uv_sphere_surface(int rings, int segments, double radius);
+/// Tet mesh of the volume inside a closed surface that is star-shaped from `centre` (m): `layers` scaled copies
+/// of the surface towards the centre, a cone of tets from the centre to the innermost copy, and three tets per
+/// prism between copies (split along diagonals chosen by node index, so neighbouring prisms conform). Its
+/// boundary is the surface itself: the volumetric counterpart of a surface model (Arnab & Raja, Table 2).
+/// 1 + layers #V nodes, (3 layers - 2) #T tets.
+/// @pre surface is outward-oriented and star-shaped from centre; layers >= 1
+Mesh tetrahedralise_radially(const Mesh& surface, const Vec3& centre, int layers);
 
 }  // namespace hooke::mesh
