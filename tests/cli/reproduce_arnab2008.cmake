@@ -1,16 +1,7 @@
 # hooke reproduce arnab2008 end to end: the report and its JSON are written, and the Young's modulus
 # re-extracted from every cube of Table 1 is within 5 % of the input (the issue's acceptance; the paper: 4.5 %).
-file(REMOVE_RECURSE ${OUT})
-execute_process(COMMAND ${HOOKE} reproduce arnab2008 -o ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-message("${out}${err}")
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "hooke reproduce arnab2008 failed: ${rc}")
-endif()
-foreach(f arnab2008.md arnab2008.json)
-  if(NOT EXISTS ${OUT}/${f})
-    message(FATAL_ERROR "missing ${f}")
-  endif()
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/reproduce_common.cmake)
+run_reproduce(arnab2008 arnab2008.md arnab2008.json)
 file(READ ${OUT}/arnab2008.json json)
 string(JSON rows LENGTH "${json}" table1)
 if(NOT rows EQUAL 6)

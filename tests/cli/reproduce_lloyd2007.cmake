@@ -1,20 +1,11 @@
 # The README's main job, end to end: hooke reproduce lloyd2007 writes the Markdown report, the JSON with every
 # number, and every figure as a PNG; the report puts the paper's numbers beside ours.
-file(REMOVE_RECURSE ${OUT})
-execute_process(COMMAND ${HOOKE} reproduce lloyd2007 -o ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-message("${out}${err}")
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "hooke reproduce lloyd2007 failed: ${rc}")
-endif()
-foreach(f lloyd2007.md lloyd2007.json figures/fig01_force_displacement.png figures/fig03_error_vs_nu.png
-          figures/fig09_membrane.png figures/fig10_triangles_eq8.png figures/fig11_triangles_eq9.png
-          figures/fig12_squares.png figures/fig13_resolution_shear.png figures/fig14_two_layer_text.png
-          figures/fig15_cylinder.png figures/fig16_cylinder_hole.png figures/fig17_cone.png
-          figures/fig18_cylinder_volume.png)
-  if(NOT EXISTS ${OUT}/${f})
-    message(FATAL_ERROR "missing ${f}")
-  endif()
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/reproduce_common.cmake)
+run_reproduce(lloyd2007 lloyd2007.md lloyd2007.json figures/fig01_force_displacement.png figures/fig03_error_vs_nu.png
+              figures/fig09_membrane.png figures/fig10_triangles_eq8.png figures/fig11_triangles_eq9.png
+              figures/fig12_squares.png figures/fig13_resolution_shear.png figures/fig14_two_layer_text.png
+              figures/fig15_cylinder.png figures/fig16_cylinder_hole.png figures/fig17_cone.png
+              figures/fig18_cylinder_volume.png)
 file(READ ${OUT}/lloyd2007.md md)
 foreach(needle "| sec5.6-cylinder-stretch |" "0.039 / 0.013" "stiffness-fit" "factor of 2" "figures/fig15_cylinder.png")
   string(FIND "${md}" "${needle}" at)
