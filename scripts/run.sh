@@ -24,3 +24,4 @@ for mesh in cylinder cylinder_hole cone; do
   done
 done 2>&1 | tee out/fem_reference.log
 "$hooke" reproduce lloyd2007 -o out/lloyd2007
+"$hooke" reproduce arnab2008 -o out/arnab2008

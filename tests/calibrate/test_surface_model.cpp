@@ -4,9 +4,12 @@
 
 #include <Eigen/Geometry>
 #include <hooke/calibrate/surface_model.hpp>
+#include <hooke/core/error.hpp>
 #include <hooke/mesh/generators.hpp>
 #include <hooke/model/problem.hpp>
+#include <hooke/solve/simulator.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
+#include <iostream>
 #include <support/block_checks.hpp>
 
 namespace hooke::calibrate {
@@ -14,9 +17,9 @@ namespace {
 
 const material::Material kMaterial{material::Law::kLinear, 100.0, 0.3};
 
-SurfaceModel build(SurfaceScheme scheme, SurfaceOptions o = {}) {
+SurfaceModel build(SurfaceScheme scheme, SurfaceOptions o = {}, const material::Material& mat = kMaterial) {
   o.scheme = scheme;
-  return make_surface_model(mesh::uv_sphere_surface(8, 12, 0.05), kMaterial, o);
+  return make_surface_model(mesh::uv_sphere_surface(8, 12, 0.05), mat, o);
 }
 
 TEST(SurfaceModel, SchemesDistributeMassAndStiffnessAsThePaperLists) {
@@ -125,6 +128,44 @@ TEST(SurfaceModel, VolumePenaltyReducesTheVolumeDeviation) {
   std::cout << "[volume] deviation with penalty " << with << ", without " << without << "\n";
   EXPECT_GT(without, 1e-3);
   EXPECT_LT(with, 0.7 * without);
+}
+
+// The surface model is a model like any other: the conservative variant settles under gravity with implicit
+// Euler to the static solver's equilibrium; the paper's scheme D runs the explicit integrators and settles with
+// damping to its own static equilibrium; an integrator that minimises an energy refuses scheme D.
+TEST(SurfaceModel, RunsInTheIntegratorsAndSettlesToTheStaticEquilibrium) {
+  VecX g = VecX::Zero(3);
+  g(2) = -9.81;
+  auto settled_error = [&](const SurfaceModel& s, solve::Integrator integrator, double dt, int steps) {
+    model::Problem statics = model::make_problem(s.model);
+    statics.external_force = VecX::Zero(s.model->dof_count());
+    for (Eigen::Index i = 0; i < statics.external_force.size(); ++i) statics.external_force(i) = s.masses(i) * g(i % 3);
+    const solve::StaticResult ref = solve::static_equilibrium(statics);
+    solve::require_converged(ref.report);
+    solve::SimulatorOptions o;
+    o.integrator = integrator;
+    solve::Simulator sim(model::make_problem(s.model), {s.masses, g, 200.0, 0.0}, o);
+    for (int k = 0; k < steps; ++k) sim.step(dt);
+    const double sag = (ref.positions - s.model->rest_positions()).cwiseAbs().maxCoeff();
+    return (sim.positions() - ref.positions).cwiseAbs().maxCoeff() / sag;
+  };
+  SurfaceOptions conservative;
+  conservative.anchor_law = surface::AnchorLaw::kTensor;
+  conservative.volume_force = surface::VolumeForce::kEnergy;
+  const material::Material stiff{material::Law::kLinear, 1e5, 0.3};  // sags by about 1 % of its size
+  const SurfaceModel c = build(SurfaceScheme::kD, conservative, stiff);
+  const double implicit = settled_error(c, solve::Integrator::kImplicitEuler, 1e-3, 300);
+  const SurfaceModel d = build(SurfaceScheme::kD, {}, stiff);
+  solve::SimulatorOptions o;
+  o.integrator = solve::Integrator::kSymplecticEuler;
+  const double dt = 0.5 * solve::Simulator(model::make_problem(d.model), {d.masses, g, 0.0, 0.0}, o).stable_time_step();
+  const double explicit_error = settled_error(d, solve::Integrator::kSymplecticEuler, dt, static_cast<int>(0.3 / dt));
+  std::cout << "[surface dynamics] settled |x - x_static| / sag: implicit Euler (conservative variant) " << implicit
+            << ", symplectic Euler (scheme D, dt " << dt << " s) " << explicit_error << "\n";
+  EXPECT_LT(implicit, 1e-4);
+  EXPECT_LT(explicit_error, 1e-4);
+  o.integrator = solve::Integrator::kImplicitEuler;
+  EXPECT_THROW(solve::Simulator(model::make_problem(d.model), {d.masses, g, 0.0, 0.0}, o), InvalidArgument);
 }
 
 }  // namespace

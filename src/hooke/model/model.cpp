@@ -11,6 +11,12 @@ Model::Model(int dim, VecX rest_positions) : m_dim(dim), m_rest(std::move(rest_p
 
 void Model::add(std::unique_ptr<TermBlock> block) { m_blocks.push_back(std::move(block)); }
 
+bool Model::exact_hessian() const {
+  for (const auto& b : m_blocks)
+    if (!b->exact_hessian()) return false;
+  return true;
+}
+
 bool Model::conservative() const {
   for (const auto& b : m_blocks)
     if (!b->conservative()) return false;

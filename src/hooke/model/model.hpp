@@ -25,6 +25,8 @@ class Model {
 
   /// True when every block is conservative (TermBlock::conservative): the forces are -dE/dx.
   bool conservative() const;
+  /// True when every block's Hessian is exact (TermBlock::exact_hessian).
+  bool exact_hessian() const;
   /// Total elastic energy at x, J.
   double energy(const Eigen::Ref<const VecX>& x) const;
   /// dE/dx at x, N.

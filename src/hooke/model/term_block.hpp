@@ -18,6 +18,9 @@ class TermBlock {
   /// potential: energy() is then only a reported measure, add_hessian_values a symmetric approximation of the
   /// force Jacobian, and solvers must not minimise the energy (they drive the force residual to zero instead).
   virtual bool conservative() const { return true; }
+  /// False when add_hessian_values is an approximation (a sparse stand-in for a dense coupling, or the symmetric
+  /// part of a non-conservative block's Jacobian): Newton solvers then refine their steps (default true).
+  virtual bool exact_hessian() const { return conservative(); }
   /// Stored elastic energy at x, J. +infinity where x is outside the block's domain (an inverted element).
   virtual double energy(const Eigen::Ref<const VecX>& x) const = 0;
   /// Adds dE/dx at x (N) to `gradient` (same size as x).

@@ -620,6 +620,14 @@ Simulator::Simulator(model::Problem problem, Dynamics dynamics, SimulatorOptions
     throw InvalidArgument("Simulator: gravity needs one component per axis");
   if (m->dyn.mass_damping < 0.0 || m->dyn.stiffness_damping < 0.0)
     throw InvalidArgument("Simulator: Rayleigh damping coefficients must be >= 0");
+  const bool needs_potential = options.integrator == Integrator::kImplicitEuler ||
+                               options.integrator == Integrator::kQuasiStatic ||
+                               options.integrator == Integrator::kLocalGlobal;
+  if (needs_potential && !m->model().conservative())
+    throw InvalidArgument(std::string(integrator_name(options.integrator)) +
+                          " minimises an energy, and this model's forces have none (e.g. the surface model's "
+                          "blended anchors or nodal volume force): use an explicit integrator, or the conservative "
+                          "variant (tensor anchors, energy volume force)");
   if (m->dyn.stiffness_damping > 0.0) m->rest_stiffness();
   if (options.integrator == Integrator::kLocalGlobal) m->setup_local_global();
   m->base_fixed = m->problem.fixed_dofs;

@@ -71,7 +71,7 @@ struct NewtonState {
       for (int k = 0; !ok && k < 30; ++k, tau *= 10.0) ok = factorize(SparseMatrix(h + tau * identity));
       if (!ok) return false;
       VecX d = -chol.solve(r);
-      if (!problem.model->conservative()) refine_step(x, lambda, r, d);
+      if (!problem.model->exact_hessian()) refine_step(x, lambda, r, d);
       double slope = r.dot(d);
       if (!(slope < 0.0)) {
         d = -r;
@@ -240,6 +240,14 @@ StaticResult linear_static(const model::Problem& problem, const LinearOptions& o
 }
 
 StaticResult static_equilibrium(const model::Problem& problem, const NewtonOptions& options) {
+  if (options.check_stability && !problem.model->exact_hessian()) {
+    // Positive definiteness of an approximate Hessian says nothing about stability.
+    NewtonOptions unchecked = options;
+    unchecked.check_stability = false;
+    StaticResult r = static_equilibrium(problem, unchecked);
+    r.report.message += " (stability not checked: the model's Hessian is an approximation)";
+    return r;
+  }
   const auto t_start = Clock::now();
   StaticResult result;
   SolveReport& rep = result.report;

@@ -78,7 +78,9 @@ struct NewtonOptions {
 /// positive definite); when stability is lost, the critical load factor is bracketed by bisection and the
 /// last stable state is returned with status kUnstable: an unstable equilibrium is never the answer.
 /// A model with non-conservative blocks (Model::conservative() false) has no potential: its line search
-/// backtracks on the residual norm instead, with the blocks' symmetric Jacobian approximations.
+/// backtracks on the residual norm instead, with the blocks' symmetric Jacobian approximations. Where a block's
+/// Hessian is approximate (Model::exact_hessian() false) Newton steps are refined by GMRES and stability is
+/// not checked (the message says so).
 StaticResult static_equilibrium(const model::Problem& problem, const NewtonOptions& options = {});
 
 }  // namespace hooke::solve

@@ -28,10 +28,26 @@ AnchorBlock::AnchorBlock(VecX anchors, RowMatX normals, VecX k_normal, VecX k_sh
       throw InvalidArgument("anchor " + std::to_string(i) + " has a negative or non-finite stiffness");
 }
 
+namespace {
+
+// |c| smoothed at c = 0 so that Newton's method does not stall on the kink of the paper's blend where a node
+// moves along its tangent plane: (sqrt(c^2 + d^2) - d) / (sqrt(1 + d^2) - d) is 0 at c = 0, 1 at |c| = 1 and
+// within 0.01 of |c| everywhere.
+constexpr double kSmoothing = 0.01;
+double blend_weight(double c) {
+  return (std::sqrt(c * c + kSmoothing * kSmoothing) - kSmoothing) /
+         (std::sqrt(1.0 + kSmoothing * kSmoothing) - kSmoothing);
+}
+double blend_weight_slope(double c) {
+  return c / std::sqrt(c * c + kSmoothing * kSmoothing) / (std::sqrt(1.0 + kSmoothing * kSmoothing) - kSmoothing);
+}
+
+}  // namespace
+
 double AnchorBlock::stiffness_along(int node, const Vec3& direction) const {
   if (m_law == AnchorLaw::kSingle) return m_k_normal(node);
   const double c = m_normals.row(node).dot(direction.normalized());
-  const double w = m_law == AnchorLaw::kBlend ? std::abs(c) : c * c;
+  const double w = m_law == AnchorLaw::kBlend ? blend_weight(c) : c * c;
   return w * m_k_normal(node) + (1.0 - w) * m_k_shear(node);
 }
 
@@ -84,8 +100,8 @@ void AnchorBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const mode
         const Vec3 u = d / l;
         const double c = n.dot(u);
         h = stiffness_along(static_cast<int>(i), d) * Mat3::Identity();
-        if (!project_psd && c != 0.0) {
-          const Mat3 j = (m_k_normal(i) - m_k_shear(i)) * (c > 0.0 ? 1.0 : -1.0) * u * (n - c * u).transpose();
+        if (!project_psd) {
+          const Mat3 j = (m_k_normal(i) - m_k_shear(i)) * blend_weight_slope(c) * u * (n - c * u).transpose();
           h += 0.5 * (j + j.transpose());
         }
         break;

@@ -12,7 +12,9 @@ enum class AnchorLaw {
   /// The paper's run-time blend: K_i = |N_i . F^_i| K_E + (1 - |N_i . F^_i|) K_G, force -K_i d. F^_i, "the
   /// acting force unit vector at node i", is read as the anchor's own force direction -d^ (at rest under a
   /// load the anchor balances the other forces on the node, so both readings agree). The force is radial in d
-  /// with a direction-dependent magnitude: it has no potential (not conservative).
+  /// with a direction-dependent magnitude: it has no potential (not conservative). |N . F^| is smoothed at 0,
+  /// (sqrt(c^2 + 0.01^2) - 0.01) / (sqrt(1 + 0.01^2) - 0.01), so that Newton's method converges where a node
+  /// moves in its tangent plane; still exactly K_E for a normal and K_G for a tangential stretch.
   kBlend,
   /// Conservative alternative with the same two extremes: E = 1/2 d^T (K_E N N^T + K_G (I - N N^T)) d, the
   /// stiffness along d then blends by (N . d^)^2 instead of |N . d^|.
@@ -40,9 +42,9 @@ class AnchorBlock final : public model::TermBlock {
   double energy(const Eigen::Ref<const VecX>& x) const override;
   void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const override;
   RowMatXi element_nodes() const override;
-  /// kBlend: the symmetric part of the force Jacobian, K_i I + (K_E - K_G) sgn(c) sym(d^ (N - c d^)^T) with
-  /// c = N . d^ (K_E I at d = 0, the stiffest direction, so that explicit step limits stay safe); with
-  /// project_psd just K_i I.
+  /// kBlend: the symmetric part of the force Jacobian, K_i I + (K_E - K_G) w'(c) sym(d^ (N - c d^)^T) with
+  /// c = N . d^ and w the smoothed |c| (K_E I at d = 0, the stiffest direction, so that explicit step limits stay
+  /// safe); with project_psd just K_i I.
   void add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter, double* values,
                           bool project_psd) const override;
 

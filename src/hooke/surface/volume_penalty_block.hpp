@@ -49,6 +49,7 @@ class VolumePenaltyBlock final : public model::TermBlock {
 
   std::string_view name() const override { return "volume"; }
   bool conservative() const override { return m_force == VolumeForce::kEnergy; }
+  bool exact_hessian() const override { return false; }
   /// K/(2 V_0) (V - V_0)^2, J (a potential only for kEnergy).
   double energy(const Eigen::Ref<const VecX>& x) const override;
   void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const override;
