@@ -10,6 +10,9 @@ namespace hooke::experiments {
 // JSON keys are the field names (units in reproduce_arnab2008.hpp).
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(YoungsModulusRow, nodes, youngs_modulus, extracted_d, extracted_c,
                                    extracted_d_no_membrane, deviation_percent, paper, newton_iterations)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(VolumeDeviationRow, scheme, force, deviation_percent, average_percent)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(RefinementRow, scheme, force, standard_deviation_mm, mean_deviation_mm,
+                                   peak_displacement_mm, compared_nodes)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FrameRateRow, model, surface_nodes, volume_nodes, dt, surface_steps_per_second,
                                    volume_steps_per_second, paper_surface_fps, paper_volume_fps)
 
@@ -62,6 +65,32 @@ void write_markdown(std::ostream& out, const Arnab2008Report& r) {
         << fmt("%.0f", row.volume_steps_per_second) << " | "
         << fmt("%.2f", row.surface_steps_per_second / row.volume_steps_per_second) << " | "
         << fmt("%g", row.paper_surface_fps) << " / " << fmt("%g", row.paper_volume_fps) << " |\n";
+  out << "\n## Fig. 10: volume deviation under a constant force\n\n"
+      << "Sphere of 5 cm (uv sphere, 222 nodes, irregular towards the poles), E = 100 Pa, a downward point force on "
+         "the top node, static equilibrium; 100 |V - V0| / V0. Scheme D's interaction is centred on the force.\n\n"
+      << "| scheme | 2 mN | 4 mN | 6 mN | 8 mN | 10 mN | average |\n|---|---|---|---|---|---|---|\n";
+  for (const auto& row : r.fig10) {
+    out << "| " << row.scheme;
+    for (double d : row.deviation_percent) out << " | " << fmt("%.3f", d) << " %";
+    out << " | **" << fmt("%.3f", row.average_percent) << " %** |\n";
+  }
+  out << "\nAs in the paper, the full scheme D deviates least. A and B coincide here: they differ only in the "
+         "masses, which a static test does not see (the paper's measurement was dynamic).\n\n"
+      << "## Fig. 8: displacement patterns before and after a local refinement\n\n"
+      << "The same sphere with E = 10 Pa (the paper's), refined around the top node (2 cm: " << r.sphere_nodes << " -> "
+      << r.refined_sphere_nodes
+      << " nodes, masses and stiffnesses re-estimated); a point force on the top node; for the original nodes "
+         "within 2 cm of it, the difference of |u| after and before refinement.\n\n"
+      << "| scheme | force | std of the difference | mean absolute difference | |u| of the loaded node |\n"
+      << "|---|---|---|---|---|\n";
+  for (const auto& row : r.fig8)
+    out << "| " << row.scheme << " | " << fmt("%.1f", row.force * 1e3) << " mN | "
+        << fmt("%.3f", row.standard_deviation_mm) << " mm | " << fmt("%.3f", row.mean_deviation_mm) << " mm | "
+        << fmt("%.2f", row.peak_displacement_mm) << " mm |\n";
+  out << "\nUnlike the paper's Fig. 8 (b), where scheme D's deviation stays flat while C's grows with the force, "
+         "ours grow with the force for both and differ by about 1 %: near the pole the load is normal to "
+         "the surface, where the blend gives K_E like scheme C. The re-estimation keeps the patterns within "
+         "0.24-0.29 of the loaded node's displacement (std / peak).\n";
 }
 
 }  // namespace
@@ -75,7 +104,10 @@ void write_arnab2008_report(const std::filesystem::path& dir, const Arnab2008Rep
                             {"strain_load", r.strain_load},
                             {"membrane_thickness_ratio", r.membrane_thickness_ratio},
                             {"table1", r.table1},
-                            {"table2", r.table2}};
+                            {"table2", r.table2},
+                            {"fig10", r.fig10},
+                            {"fig8", r.fig8},
+                            {"fig8_sphere_nodes", {r.sphere_nodes, r.refined_sphere_nodes}}};
   write_file_atomically(dir / "arnab2008.json", [&](std::ostream& out) { out << j.dump(2) << "\n"; });
   write_file_atomically(dir / "arnab2008.md", [&](std::ostream& out) { write_markdown(out, r); });
 }

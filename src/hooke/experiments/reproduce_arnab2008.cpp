@@ -165,6 +165,8 @@ Arnab2008Report reproduce_arnab2008() {
   r.membrane_thickness_ratio = calibrate::kDefaultThicknessRatio;
   r.table1 = arnab2008_table1(r.poisson_ratio, r.cube_size, r.strain_load);
   r.table2 = arnab2008_table2(r.poisson_ratio);
+  r.fig10 = arnab2008_fig10(r.poisson_ratio);
+  r.fig8 = arnab2008_fig8(r.poisson_ratio, r.sphere_nodes, r.refined_sphere_nodes);
   r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return r;
 }

@@ -30,6 +30,24 @@ struct FrameRateRow {
   double paper_surface_fps = 0.0, paper_volume_fps = 0.0;                ///< the paper's frame rates
 };
 
+/// Fig. 10: volume deviation under a constant point force, per scheme.
+struct VolumeDeviationRow {
+  std::string scheme;                     ///< "A".."D"
+  std::vector<double> force;              ///< N, the point force magnitudes
+  std::vector<double> deviation_percent;  ///< 100 |V - V0| / V0 at each force
+  double average_percent = 0.0;           ///< mean over the forces
+};
+
+/// Fig. 8: the displacement pattern around a loaded node before and after a local refinement.
+struct RefinementRow {
+  std::string scheme;                  ///< "C" or "D"
+  double force = 0.0;                  ///< N
+  double standard_deviation_mm = 0.0;  ///< std of (|u_refined| - |u_coarse|) over the compared nodes, mm
+  double mean_deviation_mm = 0.0;      ///< mean of ||u_refined| - |u_coarse||, mm
+  double peak_displacement_mm = 0.0;   ///< |u| of the loaded node on the coarse mesh, mm
+  int compared_nodes = 0;
+};
+
 struct Arnab2008Report {
   double poisson_ratio = 0.3;             ///< nu used throughout (the paper gives none)
   double cube_size = 0.1;                 ///< cube edge, m
@@ -37,6 +55,9 @@ struct Arnab2008Report {
   double membrane_thickness_ratio = 0.0;  ///< t / mean L' (calibrate::kDefaultThicknessRatio)
   std::vector<YoungsModulusRow> table1;
   std::vector<FrameRateRow> table2;
+  std::vector<VolumeDeviationRow> fig10;
+  std::vector<RefinementRow> fig8;
+  int sphere_nodes = 0, refined_sphere_nodes = 0;  ///< Fig. 8's sphere before and after refinement
   double seconds = 0.0;
 };
 
@@ -45,6 +66,11 @@ std::vector<YoungsModulusRow> arnab2008_table1(double poisson_ratio = 0.3, doubl
                                                double strain_load = 0.01);
 /// Table 2 for the three cubes and the 1 002-node sphere; `steps` timed steps per model.
 std::vector<FrameRateRow> arnab2008_table2(double poisson_ratio = 0.3, int steps = 200);
+/// Fig. 10 on a sphere of 5 cm (E = 100 Pa): a downward force on the top node, schemes A-D.
+std::vector<VolumeDeviationRow> arnab2008_fig10(double poisson_ratio = 0.3);
+/// Fig. 8 on the same sphere (E = 10 Pa, the paper's): refine around the top node, compare the displacement of
+/// the original nodes within 2 cm of it, schemes C and D, over force magnitudes. Fills the node counts.
+std::vector<RefinementRow> arnab2008_fig8(double poisson_ratio, int& sphere_nodes, int& refined_nodes);
 /// Runs everything.
 Arnab2008Report reproduce_arnab2008();
 /// Writes `dir`/arnab2008.md and arnab2008.json (atomically).
