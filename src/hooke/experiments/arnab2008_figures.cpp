@@ -3,10 +3,12 @@
 #include <cmath>
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/experiments/reproduce_arnab2008.hpp>
+#include <hooke/fem/elastic_block.hpp>
 #include <hooke/mesh/generators.hpp>
 #include <hooke/model/problem.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
 #include <hooke/surface/refine.hpp>
+#include <map>
 
 namespace hooke::experiments {
 namespace {
@@ -94,6 +96,79 @@ std::vector<RefinementRow> arnab2008_fig8(double nu, int& sphere_nodes, int& ref
     }
   }
   return rows;
+}
+
+ShearComparison arnab2008_fig12(double nu) {
+  const int n = 10;
+  const double a = 0.1, e = 3250.0;
+  ShearComparison out;
+  out.youngs_modulus = e;
+  out.shear_stress = 0.05 * e;
+  const calibrate::SurfaceModel s =
+      calibrate::make_surface_model(mesh::cube_surface(n, a), {material::Law::kLinear, e, nu});
+  const mesh::Mesh tets = mesh::tet_box(a, a, a, n, n, n);
+  out.surface_nodes = s.mesh.node_count();
+  out.fem_nodes = tets.node_count();
+  // Surface node -> the tet node at the same place (both meshes use the same n^3 grid).
+  auto grid_key = [&](const Eigen::Ref<const RowMatX>& nodes, int i) {
+    std::array<long, 3> k{};
+    for (int d = 0; d < 3; ++d) k[static_cast<size_t>(d)] = std::lround(nodes(i, d) / a * n);
+    return k;
+  };
+  std::map<std::array<long, 3>, int> tet_node;
+  for (int i = 0; i < tets.node_count(); ++i) tet_node[grid_key(tets.nodes, i)] = i;
+  std::vector<int> twin(static_cast<size_t>(s.mesh.node_count()));
+  for (int i = 0; i < s.mesh.node_count(); ++i) twin[static_cast<size_t>(i)] = tet_node.at(grid_key(s.mesh.nodes, i));
+  // Shear load: sigma A_t / 3 along x per node of each top triangle; the same nodal forces on both models.
+  model::Problem ps = model::make_problem(s.model);
+  ps.external_force = VecX::Zero(s.model->dof_count());
+  for (int t = 0; t < s.mesh.element_count(); ++t) {
+    bool top = true;
+    for (int k = 0; k < 3; ++k) top = top && s.mesh.nodes(s.mesh.elements(t, k), 2) > a * (1.0 - 1e-12);
+    if (!top) continue;
+    const Vec3 p0 = s.mesh.nodes.row(s.mesh.elements(t, 0)).transpose(),
+               p1 = s.mesh.nodes.row(s.mesh.elements(t, 1)).transpose(),
+               p2 = s.mesh.nodes.row(s.mesh.elements(t, 2)).transpose();
+    const double area = 0.5 * (p1 - p0).cross(p2 - p0).norm();
+    for (int k = 0; k < 3; ++k) ps.external_force(3 * s.mesh.elements(t, k)) += out.shear_stress * area / 3.0;
+  }
+  std::vector<int> bottom_surface, bottom_tets;
+  for (int i = 0; i < s.mesh.node_count(); ++i)
+    if (s.mesh.nodes(i, 2) < 1e-12 * a) bottom_surface.push_back(i);
+  for (int i = 0; i < tets.node_count(); ++i)
+    if (tets.nodes(i, 2) < 1e-12 * a) bottom_tets.push_back(i);
+  model::fix_nodes(ps, bottom_surface);
+  auto fem_model = std::make_shared<model::Model>(3, Eigen::Map<const VecX>(tets.nodes.data(), tets.nodes.size()));
+  fem_model->add(fem::make_elastic_block(tets, {material::Law::kLinear, e, nu}));
+  model::Problem pf = model::make_problem(fem_model);
+  pf.external_force = VecX::Zero(fem_model->dof_count());
+  for (int i = 0; i < s.mesh.node_count(); ++i)
+    pf.external_force.segment<3>(3 * twin[static_cast<size_t>(i)]) = ps.external_force.segment<3>(3 * i);
+  model::fix_nodes(pf, bottom_tets);
+  const solve::StaticResult rf = solve::linear_static(pf);
+  solve::require_converged(rf.report);
+  solve::NewtonOptions newton;
+  newton.max_iterations = 100;
+  const solve::StaticResult rs = solve::static_equilibrium(ps, newton);
+  solve::require_converged(rs.report);
+  double top_sum = 0.0;
+  int top_count = 0;
+  for (int i = 0; i < s.mesh.node_count(); ++i) {
+    const int j = twin[static_cast<size_t>(i)];
+    const Vec3 us = rs.positions.segment<3>(3 * i) - s.model->rest_positions().segment<3>(3 * i);
+    const Vec3 uf = rf.positions.segment<3>(3 * j) - fem_model->rest_positions().segment<3>(3 * j);
+    const double err = 1e3 * (us - uf).norm();
+    out.fem_max_mm = std::max(out.fem_max_mm, 1e3 * uf.norm());
+    out.surface_max_mm = std::max(out.surface_max_mm, 1e3 * us.norm());
+    out.max_error_mm = std::max(out.max_error_mm, err);
+    out.mean_error_mm += err / s.mesh.node_count();
+    if (s.mesh.nodes(i, 2) > a * (1.0 - 1e-12)) {
+      top_sum += err;
+      ++top_count;
+    }
+  }
+  out.top_mean_error_mm = top_sum / top_count;
+  return out;
 }
 
 }  // namespace hooke::experiments
