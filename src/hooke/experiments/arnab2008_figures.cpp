@@ -2,6 +2,7 @@
 // before and after a local refinement).
 #include <cmath>
 #include <hooke/calibrate/surface_model.hpp>
+#include <hooke/experiments/detail/face_load.hpp>
 #include <hooke/experiments/reproduce_arnab2008.hpp>
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/mesh/generators.hpp>
@@ -121,17 +122,7 @@ ShearComparison arnab2008_fig12(double nu) {
   for (int i = 0; i < s.mesh.node_count(); ++i) twin[static_cast<size_t>(i)] = tet_node.at(grid_key(s.mesh.nodes, i));
   // Shear load: sigma A_t / 3 along x per node of each top triangle; the same nodal forces on both models.
   model::Problem ps = model::make_problem(s.model);
-  ps.external_force = VecX::Zero(s.model->dof_count());
-  for (int t = 0; t < s.mesh.element_count(); ++t) {
-    bool top = true;
-    for (int k = 0; k < 3; ++k) top = top && s.mesh.nodes(s.mesh.elements(t, k), 2) > a * (1.0 - 1e-12);
-    if (!top) continue;
-    const Vec3 p0 = s.mesh.nodes.row(s.mesh.elements(t, 0)).transpose(),
-               p1 = s.mesh.nodes.row(s.mesh.elements(t, 1)).transpose(),
-               p2 = s.mesh.nodes.row(s.mesh.elements(t, 2)).transpose();
-    const double area = 0.5 * (p1 - p0).cross(p2 - p0).norm();
-    for (int k = 0; k < 3; ++k) ps.external_force(3 * s.mesh.elements(t, k)) += out.shear_stress * area / 3.0;
-  }
+  ps.external_force = detail::top_face_load(s.mesh, a, Vec3(out.shear_stress, 0, 0));
   std::vector<int> bottom_surface, bottom_tets;
   for (int i = 0; i < s.mesh.node_count(); ++i)
     if (s.mesh.nodes(i, 2) < 1e-12 * a) bottom_surface.push_back(i);

@@ -7,6 +7,7 @@
 #include <hooke/calibrate/spring_model.hpp>
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/experiments/detail/face_load.hpp>
 #include <hooke/experiments/reproduce_arnab2008.hpp>
 #include <hooke/mesh/generators.hpp>
 #include <hooke/model/mass.hpp>
@@ -37,18 +38,8 @@ Extraction extract(int n, double e, double nu, double a, double strain_load, cal
   const calibrate::SurfaceModel s =
       calibrate::make_surface_model(mesh::cube_surface(n, a), {material::Law::kLinear, e, nu}, o);
   model::Problem p = model::make_problem(s.model);
-  p.external_force = VecX::Zero(s.model->dof_count());
   const double sigma = strain_load * e;
-  for (int t = 0; t < s.mesh.element_count(); ++t) {
-    bool top = true;
-    for (int k = 0; k < 3; ++k) top = top && s.mesh.nodes(s.mesh.elements(t, k), 2) > a * (1.0 - 1e-12);
-    if (!top) continue;
-    const Vec3 p0 = s.mesh.nodes.row(s.mesh.elements(t, 0)).transpose(),
-               p1 = s.mesh.nodes.row(s.mesh.elements(t, 1)).transpose(),
-               p2 = s.mesh.nodes.row(s.mesh.elements(t, 2)).transpose();
-    const double area = 0.5 * (p1 - p0).cross(p2 - p0).norm();
-    for (int k = 0; k < 3; ++k) p.external_force(3 * s.mesh.elements(t, k) + 2) -= sigma * area / 3.0;
-  }
+  p.external_force = detail::top_face_load(s.mesh, a, Vec3(0, 0, -sigma));
   if (s.volume) s.volume->set_interaction({Vec3(a / 2, a / 2, a), Vec3(0, 0, -1), 2.0 * a});
   solve::NewtonOptions newton;
   newton.max_iterations = 100;
