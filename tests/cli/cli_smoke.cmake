@@ -48,6 +48,21 @@ if(NOT rc EQUAL 2 OR EXISTS ${OUT}/bad.png)
   message(FATAL_ERROR "a bad figure spec must fail with exit code 2 and write nothing (got ${rc}: ${err})")
 endif()
 
+# local/global with the Chebyshev global step runs from the command line; an iteration count below 1 is refused.
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.25 --method lloyd-tet
+                        --integrator local-global --global-solve chebyshev --iterations 7 --dt 0.001 --steps 20
+                        --gravity -o ${OUT}/sim_cheb RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0 OR NOT EXISTS ${OUT}/sim_cheb/simulation.pvd)
+  message(FATAL_ERROR "hooke simulate --global-solve chebyshev failed: ${rc}")
+endif()
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.25 --integrator local-global
+                        --global-solve chebyshev --iterations 0 --steps 2 -o ${OUT}/sim_zero
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 2)
+  message(FATAL_ERROR "--iterations 0 must fail with exit code 2 (got ${rc}: ${err})")
+endif()
+
 # hooke simulate: the cylinder under gravity writes a ParaView series whose frames meshio reads back; an
 # explicit step far beyond the stability limit fails with exit code 3 and leaves no series.
 execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.25 --method lloyd-tet
@@ -76,13 +91,13 @@ endif()
 execute_process(COMMAND ${HOOKE} bench --sizes 1k --steps 3 -o ${OUT}/bench RESULT_VARIABLE rc OUTPUT_VARIABLE out
                 ERROR_VARIABLE err)
 message("${out}${err}")
-if(NOT rc EQUAL 0 OR NOT out MATCHES "local-global" OR NOT EXISTS ${OUT}/bench/bench.json)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "local-global \\(chebyshev\\)" OR NOT EXISTS ${OUT}/bench/bench.json)
   message(FATAL_ERROR "hooke bench failed: ${rc}")
 endif()
 file(READ ${OUT}/bench/bench.json bench_json)
 string(JSON steps LENGTH "${bench_json}" steps)
-if(NOT steps EQUAL 5)
-  message(FATAL_ERROR "hooke bench: expected 5 integrators in bench.json, got ${steps}")
+if(NOT steps EQUAL 6)
+  message(FATAL_ERROR "hooke bench: expected 6 integrator rows in bench.json, got ${steps}")
 endif()
 execute_process(COMMAND ${HOOKE} bench --sizes 2k RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 2)
