@@ -162,4 +162,62 @@ ShearComparison arnab2008_fig12(double nu) {
   return out;
 }
 
+std::vector<GravityRow> arnab2008_fig9(double nu) {
+  std::vector<GravityRow> rows;
+  for (calibrate::SurfaceScheme scheme : {calibrate::SurfaceScheme::kB, calibrate::SurfaceScheme::kD}) {
+    calibrate::SurfaceOptions o;
+    o.scheme = scheme;
+    const calibrate::SurfaceModel s = calibrate::make_surface_model(sphere(), {material::Law::kLinear, 10000.0, nu}, o);
+    model::Problem p = model::make_problem(s.model);
+    p.external_force = VecX::Zero(s.model->dof_count());
+    for (int i = 0; i < s.mesh.node_count(); ++i) p.external_force(3 * i + 2) = -9.81 * s.masses(3 * i);
+    solve::NewtonOptions newton;
+    newton.max_iterations = 100;
+    const solve::StaticResult r = solve::static_equilibrium(p, newton);
+    solve::require_converged(r.report);
+    const int n = s.mesh.node_count();
+    VecX sag(n);
+    for (int i = 0; i < n; ++i) sag(i) = s.model->rest_positions()(3 * i + 2) - r.positions(3 * i + 2);
+    GravityRow row;
+    row.scheme = std::string(calibrate::surface_scheme_name(scheme));
+    row.mean_sag_mm = 1e3 * sag.mean();
+    row.sag_spread_percent = 100.0 * std::sqrt((sag.array() - sag.mean()).square().mean()) / sag.mean();
+    row.volume_deviation_percent =
+        100.0 * std::abs(surface::enclosed_volume(s.mesh.elements, r.positions) / s.discretisation.volume - 1.0);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::vector<WeightsRow> arnab2008_fig11(double nu) {
+  std::vector<WeightsRow> rows;
+  for (const bool run_time : {false, true}) {
+    const calibrate::SurfaceModel s = calibrate::make_surface_model(sphere(), {material::Law::kLinear, 100.0, nu});
+    model::Problem p = model::make_problem(s.model);
+    p.external_force = VecX::Zero(s.model->dof_count());
+    p.external_force(2) = -0.005;  // node 0: the top pole
+    if (run_time) s.volume->set_interaction({s.mesh.nodes.row(0).transpose(), Vec3(0, 0, -1), 2.0 * kRadius});
+    solve::NewtonOptions newton;
+    newton.max_iterations = 100;
+    const solve::StaticResult r = solve::static_equilibrium(p, newton);
+    solve::require_converged(r.report);
+    const VecX u = r.positions - s.model->rest_positions();
+    WeightsRow row;
+    row.weights = run_time ? "run-time" : "uniform";
+    row.pushed_node_mm = -1e3 * u(2);
+    row.opposite_pole_mm = -1e3 * u(3 * (s.mesh.node_count() - 1) + 2);
+    int equator = 0;
+    for (int i = 0; i < s.mesh.node_count(); ++i)
+      if (std::abs(s.mesh.nodes(i, 2)) < 1e-9 * kRadius) {
+        row.equator_outward_mm += 1e3 * u.segment<3>(3 * i).dot(s.mesh.nodes.row(i).transpose().normalized());
+        ++equator;
+      }
+    row.equator_outward_mm /= std::max(equator, 1);
+    row.volume_deviation_percent =
+        100.0 * std::abs(surface::enclosed_volume(s.mesh.elements, r.positions) / s.discretisation.volume - 1.0);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 }  // namespace hooke::experiments

@@ -58,6 +58,25 @@ struct ShearComparison {
   double top_mean_error_mm = 0.0;                   ///< the same over the sheared face
 };
 
+/// Fig. 9: the sphere under gravity. With world anchors a uniform sphere should sag uniformly (rho g L'^2 / E
+/// per node); the spread of the nodes' vertical displacement measures how far a scheme is from that.
+struct GravityRow {
+  std::string scheme;               ///< "B" or "D"
+  double mean_sag_mm = 0.0;         ///< mean downward displacement over the nodes, mm
+  double sag_spread_percent = 0.0;  ///< 100 x std / mean of the downward displacement
+  double volume_deviation_percent = 0.0;
+};
+
+/// Fig. 11: a push on the top node of the sphere (scheme D) with uniform weights and with the run-time weights of
+/// Eq. 4: where the volume penalty moves the body.
+struct WeightsRow {
+  std::string weights;              ///< "uniform" or "run-time"
+  double pushed_node_mm = 0.0;      ///< downward displacement of the pushed node, mm
+  double opposite_pole_mm = 0.0;    ///< downward displacement of the opposite (bottom) pole, mm
+  double equator_outward_mm = 0.0;  ///< mean outward radial displacement of the equator nodes, mm
+  double volume_deviation_percent = 0.0;
+};
+
 struct Arnab2008Report {
   double poisson_ratio = 0.3;             ///< nu used throughout (the paper gives none)
   double cube_size = 0.1;                 ///< cube edge, m
@@ -68,6 +87,8 @@ struct Arnab2008Report {
   std::vector<VolumeDeviationRow> fig10;
   std::vector<RefinementRow> fig8;
   ShearComparison fig12;
+  std::vector<GravityRow> fig9;
+  std::vector<WeightsRow> fig11;
   int sphere_nodes = 0, refined_sphere_nodes = 0;  ///< Fig. 8's sphere before and after refinement
   double seconds = 0.0;
 };
@@ -84,6 +105,10 @@ std::vector<VolumeDeviationRow> arnab2008_fig10(double poisson_ratio = 0.3);
 std::vector<RefinementRow> arnab2008_fig8(double poisson_ratio, int& sphere_nodes, int& refined_nodes);
 /// Fig. 12 on the 602-node cube (E = 3.25 kPa), a shear stress of 5 % of E along x on the top face.
 ShearComparison arnab2008_fig12(double poisson_ratio);
+/// Fig. 9 on the 5 cm sphere (E = 10 kPa, so that it sags by about 5 % of its radius; 1000 kg/m^3), schemes B, D.
+std::vector<GravityRow> arnab2008_fig9(double poisson_ratio);
+/// Fig. 11 on the 5 cm sphere (E = 100 Pa), a 5 mN push on the top node.
+std::vector<WeightsRow> arnab2008_fig11(double poisson_ratio);
 /// Runs everything.
 Arnab2008Report reproduce_arnab2008();
 /// Writes `dir`/arnab2008.md and arnab2008.json (atomically).
