@@ -9,6 +9,8 @@
 #include <hooke/experiments/figure.hpp>
 #include <hooke/io/mesh_io.hpp>
 #include <hooke/io/vtu.hpp>
+#include <hooke/mesh/generators.hpp>
+#include <hooke/surface/closed_surface.hpp>
 #include <memory>
 #include <string>
 
@@ -20,7 +22,8 @@ namespace {
 
 struct CompareCli {
   ModelInput in;
-  std::string method = "lloyd-tet", load = "stretch", reference = "linear", out_dir, plane = "stress";
+  std::string method = "lloyd-tet", load = "stretch", reference = "linear", out_dir, plane = "stress", scheme = "D";
+  int layers = 4;
   bool no_figure = false;
   double traction = std::nan(""), strain = std::nan("");
 };
@@ -35,15 +38,32 @@ int run_compare(const CompareCli& o) {
   if (std::isnan(o.traction) == std::isnan(o.strain))
     throw InvalidArgument("give exactly one of --traction and --strain");
   experiments::CompareOptions co;
-  co.method = calibrate::method_from_name(o.method);
+  if (o.method != "surface") co.method = calibrate::method_from_name(o.method);
   co.load = experiments::load_kind_from_name(o.load);
   co.reference = material::law_from_name(o.reference);
   co.traction_pa = std::isnan(o.traction) ? 0.0 : o.traction;
   co.strain = std::isnan(o.strain) ? 0.0 : o.strain;
-  const experiments::Comparison c = experiments::compare(m, {mat}, co);
+  const bool surface = o.method == "surface";
+  experiments::Comparison c;
+  mesh::Mesh fem_mesh = m;
+  if (surface) {
+    // Arnab & Raja's surface model against the FEM of the radially tetrahedralised volume.
+    calibrate::SurfaceOptions so;
+    so.scheme = calibrate::surface_scheme_from_name(o.scheme);
+    c = experiments::compare_surface(m, mat, so, co, o.layers);
+    surface::check_closed_surface(fem_mesh);
+    fem_mesh = mesh::tetrahedralise_radially(fem_mesh, surface::volume_centroid(fem_mesh), o.layers);
+  } else {
+    c = experiments::compare(m, {mat}, co);
+  }
   const double to_unit = 1.0 / ro.metres_per_unit;
-  std::printf("hooke compare: %s, %s springs (%zu) vs %s FEM, %s, traction %.6g Pa\n", o.in.mesh_path.c_str(),
-              o.method.c_str(), c.springs.pairs.size(), o.reference.c_str(), o.load.c_str(), c.load.traction_pa);
+  if (surface)
+    std::printf("hooke compare: %s, surface model (scheme %s) vs %s FEM of %d tets, %s, traction %.6g Pa\n",
+                o.in.mesh_path.c_str(), o.scheme.c_str(), o.reference.c_str(), fem_mesh.element_count(), o.load.c_str(),
+                c.load.traction_pa);
+  else
+    std::printf("hooke compare: %s, %s springs (%zu) vs %s FEM, %s, traction %.6g Pa\n", o.in.mesh_path.c_str(),
+                o.method.c_str(), c.springs.pairs.size(), o.reference.c_str(), o.load.c_str(), c.load.traction_pa);
   std::printf("  fem       %s: %s\n", std::string(solve::status_name(c.fem_report.status)).c_str(),
               c.fem_report.message.c_str());
   std::printf("  springs   %s: %s\n", std::string(solve::status_name(c.spring_report.status)).c_str(),
@@ -65,9 +85,10 @@ int run_compare(const CompareCli& o) {
     char title[160];
     std::snprintf(title, sizeof title, "%s, %s vs %s FEM\nmax %.3g cm, mean %.3g cm", o.load.c_str(), o.method.c_str(),
                   o.reference.c_str(), 100.0 * c.max_error, 100.0 * c.mean_error);
-    experiments::Figure fig{"compare",
-                            std::filesystem::path(o.in.mesh_path).filename().string() + " (MSM red, FEM black)",
-                            {experiments::deformation_panel(title, m, c.fem_positions, m, c.spring_positions)}};
+    experiments::Figure fig{
+        "compare",
+        std::filesystem::path(o.in.mesh_path).filename().string() + " (MSM red, FEM black)",
+        {experiments::deformation_panel(title, fem_mesh, c.fem_mesh_positions, m, c.spring_positions)}};
     experiments::write_figure_spec(o.out_dir, fig);
     if (!o.no_figure) {
       plot_figures({std::filesystem::path(o.out_dir) / "compare.json"});
@@ -85,7 +106,11 @@ Action add_compare_command(CLI::App& app) {
   add_model_input_options(cmd, o->in);
   cmd->add_option("--method", o->method,
                   "Calibration method (vangelder, lloyd-equilateral, lloyd-triangle, lloyd-square, "
-                  "lloyd-tet, lloyd-tet-volume, stiffness-fit, stiffness-fit-volume)")
+                  "lloyd-tet, lloyd-tet-volume, stiffness-fit, stiffness-fit-volume), or surface for Arnab & "
+                  "Raja's surface model of a closed triangle surface")
+      ->capture_default_str();
+  cmd->add_option("--scheme", o->scheme, "surface: scheme A, B, C or D")->capture_default_str();
+  cmd->add_option("--layers", o->layers, "surface: layers of the radial tetrahedralisation for the FEM")
       ->capture_default_str();
   cmd->add_option("--load", o->load, "stretch, compress or shear")->capture_default_str();
   cmd->add_option("--traction", o->traction, "Traction on the top boundary, Pa");

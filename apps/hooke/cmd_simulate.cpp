@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <hooke/calibrate/method.hpp>
+#include <hooke/calibrate/surface_model.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/experiments/load_case.hpp>
@@ -13,6 +14,7 @@
 #include <hooke/io/mesh_io.hpp>
 #include <hooke/io/pvd.hpp>
 #include <hooke/io/vtu.hpp>
+#include <hooke/mesh/measure.hpp>
 #include <hooke/mesh/reorder.hpp>
 #include <hooke/model/mass.hpp>
 #include <hooke/solve/simulator.hpp>
@@ -28,8 +30,8 @@ namespace {
 struct SimulateCli {
   ModelInput in;
   std::string method = "lloyd-tet", law = "stvk", integrator = "implicit-euler", linear_solver = "cholesky",
-              global_solve = "direct", out_dir;
-  double density = 1000.0, dt = 1e-3, damping_mass = 0.0, damping_stiffness = 0.0;
+              global_solve = "direct", scheme = "D", anchor_law, volume_force = "nodal", out_dir;
+  double density = 1000.0, dt = 1e-3, damping_mass = 0.0, damping_stiffness = 0.0, influence_radius = 0.0;
   int steps = 100, every = 0, probe_node = -1, iterations = 10;
   bool gravity = false, free_body = false, no_reorder = false;
   std::vector<double> probe_offset, probe_force;
@@ -63,7 +65,20 @@ int run_simulate(const SimulateCli& o) {
   material::validate(mat);
   const VecX rest = Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size());
   std::shared_ptr<model::Model> model;
-  if (o.method == "fem") {
+  VecX masses;
+  const surface::VolumePenaltyBlock* volume = nullptr;
+  if (o.method == "surface") {
+    // Arnab & Raja's surface model (docs/surface.md): the anchors hold the body, no node is clamped.
+    calibrate::SurfaceOptions so;
+    so.scheme = calibrate::surface_scheme_from_name(o.scheme);
+    so.density = o.density;
+    if (!o.anchor_law.empty()) so.anchor_law = surface::anchor_law_from_name(o.anchor_law);
+    so.volume_force = surface::volume_force_from_name(o.volume_force);
+    const calibrate::SurfaceModel s = calibrate::make_surface_model(m, mat, so);
+    model = s.model;
+    masses = s.masses;
+    volume = s.volume;
+  } else if (o.method == "fem") {
     mat.law = material::law_from_name(o.law);
     model = std::make_shared<model::Model>(d, rest);
     model->add(fem::make_elastic_block(m, mat));
@@ -71,10 +86,11 @@ int run_simulate(const SimulateCli& o) {
     model = calibrate::make_model(m, calibrate::calibrate(m, {mat}, calibrate::method_from_name(o.method)));
   }
   model::Problem problem = model::make_problem(model);
-  if (!o.free_body)
+  if (!o.free_body && o.method != "surface")
     model::fix_nodes(problem,
                      experiments::make_load_case(m, experiments::LoadKind::kStretch, 0.0, o.in.thickness).fixed_nodes);
-  solve::Dynamics dyn{model::lumped_masses(m, o.density, o.in.thickness), VecX(), o.damping_mass, o.damping_stiffness};
+  if (masses.size() == 0) masses = model::lumped_masses(m, o.density, o.in.thickness);
+  solve::Dynamics dyn{masses, VecX(), o.damping_mass, o.damping_stiffness};
   if (o.gravity) {
     dyn.gravity = VecX::Zero(d);
     dyn.gravity(d - 1) = -9.81;  // along -y in 2D, -z in 3D: the meshes' vertical axis
@@ -98,6 +114,12 @@ int run_simulate(const SimulateCli& o) {
     probe.drive_position = !o.probe_offset.empty();
     probe.offset = probe.force = VecX::Zero(d);
     sim.set_probe(probe);
+    if (volume) {  // the weights of Eq. 4 follow the probe (Arnab & Raja, Fig. 11)
+      const double radius = o.influence_radius > 0.0 ? o.influence_radius : 0.5 * mesh::bounding_box_diagonal(m);
+      Vec3 direction;
+      for (int a = 0; a < 3; ++a) direction(a) = v[static_cast<size_t>(a)];
+      if (direction.norm() > 0.0) volume->set_interaction({m.nodes.row(probe.nodes[0]).transpose(), direction, radius});
+    }
   }
   if (o.steps < 1) throw InvalidArgument("--steps must be at least 1");
   const int every = o.every > 0 ? o.every : std::max(1, o.steps / 100);
@@ -176,7 +198,16 @@ Action add_simulate_command(CLI::App& app) {
   auto o = std::make_shared<SimulateCli>();
   CLI::App* cmd = app.add_subcommand("simulate", "Simulate a calibrated spring model (or the FEM model) in time");
   add_model_input_options(cmd, o->in);
-  cmd->add_option("--method", o->method, "Calibration method, or fem for the FEM model")->capture_default_str();
+  cmd->add_option("--method", o->method,
+                  "Calibration method, fem for the FEM model, or surface for Arnab & Raja's surface model (a closed "
+                  "triangle surface)")
+      ->capture_default_str();
+  cmd->add_option("--scheme", o->scheme, "surface: scheme A, B, C or D")->capture_default_str();
+  cmd->add_option("--anchor-law", o->anchor_law, "surface: single, blend or tensor (default: the scheme's)");
+  cmd->add_option("--volume-force", o->volume_force, "surface: nodal, printed or energy")->capture_default_str();
+  cmd->add_option("--influence-radius", o->influence_radius,
+                  "surface: radius of influence of the probe's interaction weights (Eq. 4), m (default: half the "
+                  "bounding-box diagonal)");
   cmd->add_option("--law", o->law, "FEM law with --method fem: linear, stvk, neohookean")->capture_default_str();
   cmd->add_option("--integrator", o->integrator,
                   "symplectic-euler, velocity-verlet, implicit-euler, local-global, quasi-static")

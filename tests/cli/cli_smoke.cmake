@@ -63,6 +63,29 @@ if(NOT rc EQUAL 2)
   message(FATAL_ERROR "--iterations 0 must fail with exit code 2 (got ${rc}: ${err})")
 endif()
 
+# The surface model from the command line: simulate a closed surface with a probe, compare it with the FEM of
+# its radially tetrahedralised volume.
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/sphere_surface.msh --young 1000 --poisson 0.3 --method surface
+                        --integrator symplectic-euler --dt 0.0005 --steps 40 --gravity --damping-mass 20
+                        --probe-node 0 --probe-force 0,0,-0.002 -o ${OUT}/sim_surface
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "surface model" OR NOT EXISTS ${OUT}/sim_surface/simulation.pvd)
+  message(FATAL_ERROR "hooke simulate --method surface failed: ${rc}")
+endif()
+execute_process(COMMAND ${HOOKE} compare ${MESHES}/../../tests/data/cube.off --young 3250 --poisson 0.3 --method surface
+                        --scheme C --load compress --strain 0.02 -o ${OUT}/cmp_surface --no-figure
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "surface model \\(scheme C\\)" OR NOT EXISTS ${OUT}/cmp_surface/compare.vtu)
+  message(FATAL_ERROR "hooke compare --method surface failed: ${rc}")
+endif()
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 1000 --poisson 0.3 --method surface --steps 2
+                        -o ${OUT}/sim_surface_tets RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "closed triangle surface")
+  message(FATAL_ERROR "a tet mesh given to the surface model must fail with exit code 2 (got ${rc}: ${err})")
+endif()
+
 # hooke simulate: the cylinder under gravity writes a ParaView series whose frames meshio reads back; an
 # explicit step far beyond the stability limit fails with exit code 3 and leaves no series.
 execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.25 --method lloyd-tet

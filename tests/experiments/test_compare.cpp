@@ -71,5 +71,31 @@ TEST(Figure, DrawingEdgesAreElementEdgesIn2DAndTheSurfaceIn3D) {
   EXPECT_EQ(e.size(), 6u * 8u + 12u * 2u);
 }
 
+// The surface model against the FEM of its radially tetrahedralised volume: both see the same total load at the
+// same surface nodes, both solves converge, the FEM positions are those of the tet mesh's boundary nodes, and the
+// surface model moves the loaded face the same way as the FEM (compression: down).
+TEST(CompareSurface, SameLoadsOnBothAndTheSameSense) {
+  const mesh::Mesh cube = mesh::cube_surface(4, 0.1);
+  CompareOptions o;
+  o.load = LoadKind::kCompress;
+  o.strain = 0.02;
+  const Comparison c = compare_surface(cube, {Law::kLinear, 3250.0, 0.3}, {}, o, 3);
+  ASSERT_EQ(c.fem_report.status, solve::SolveStatus::kConverged);
+  ASSERT_EQ(c.spring_report.status, solve::SolveStatus::kConverged);
+  const int n = cube.node_count(), offset = 1 + 2 * n;
+  EXPECT_EQ(c.fem_positions, c.fem_mesh_positions.segment(3 * offset, 3 * n));
+  double total = 0.0;
+  for (Eigen::Index i = 2; i < c.load.nodal_forces.size(); i += 3) total += c.load.nodal_forces(i);
+  EXPECT_NEAR(total, -c.load.traction_pa * 0.01, 1e-9 * c.load.traction_pa);  // over the 0.1 m x 0.1 m face
+  ASSERT_FALSE(c.load.top_nodes.empty());
+  for (int i : c.load.top_nodes) {
+    EXPECT_LT(c.fem_positions(3 * i + 2), cube.nodes(i, 2));
+    EXPECT_LT(c.spring_positions(3 * i + 2), cube.nodes(i, 2));
+  }
+  std::cout << "[compare-surface] compress 2 %: max error " << c.max_error * 1e3 << " mm, mean " << c.mean_error * 1e3
+            << " mm\n";
+  EXPECT_GT(c.max_error, 0.0);
+}
+
 }  // namespace
 }  // namespace hooke::experiments

@@ -1,7 +1,9 @@
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/compare.hpp>
 #include <hooke/fem/elastic_block.hpp>
+#include <hooke/mesh/generators.hpp>
 #include <hooke/mesh/interpolate.hpp>
+#include <hooke/mesh/measure.hpp>
 
 namespace hooke::experiments {
 namespace {
@@ -79,6 +81,46 @@ Comparison compare_across(const mesh::Mesh& coarse, const mesh::Mesh& fine, cons
   c.fem_report = fem.report;
   c.spring_report = msm.report;
   measure(c, d);
+  return c;
+}
+
+Comparison compare_surface(const mesh::Mesh& surface, const material::Material& material,
+                           const calibrate::SurfaceOptions& surface_options, const CompareOptions& options,
+                           int layers) {
+  const calibrate::SurfaceModel s = calibrate::make_surface_model(surface, material, surface_options);
+  const mesh::Mesh tets = mesh::tetrahedralise_radially(s.mesh, s.discretisation.centre, layers);
+  const int n = s.mesh.node_count(), offset = 1 + (layers - 1) * n;  // tet node of surface node i: offset + i
+  Comparison c;
+  const LoadCase fine = make_load_case(tets, options.load, traction_of(tets, {material}, options));
+  const solve::StaticResult fem = solve_fem(tets, {material}, options.reference, fine);
+  model::Problem problem = model::make_problem(s.model);
+  problem.external_force = fine.nodal_forces.segment(3 * offset, 3 * n);
+  c.load = fine;
+  c.load.fixed_nodes.clear();
+  c.load.top_nodes.clear();
+  for (int i : fine.fixed_nodes) {
+    if (i < offset) throw InvalidArgument("compare_surface: a clamped node lies inside the body");
+    c.load.fixed_nodes.push_back(i - offset);
+  }
+  for (int i : fine.top_nodes)
+    if (i >= offset) c.load.top_nodes.push_back(i - offset);
+  c.load.nodal_forces = problem.external_force;
+  model::fix_nodes(problem, c.load.fixed_nodes);
+  if (s.volume && c.load.top_nodes.size() > 0) {
+    // The interaction of Eq. 4 at the centre of the loaded face, along the load.
+    Vec3 centre = Vec3::Zero();
+    for (int i : c.load.top_nodes) centre += s.mesh.nodes.row(i).transpose() / c.load.top_nodes.size();
+    s.volume->set_interaction({centre, Vec3(c.load.direction), mesh::bounding_box_diagonal(s.mesh)});
+  }
+  solve::NewtonOptions newton;
+  newton.max_iterations = 100;
+  const solve::StaticResult msm = solve::static_equilibrium(problem, newton);
+  c.fem_mesh_positions = fem.positions;
+  c.fem_positions = fem.positions.segment(3 * offset, 3 * n);
+  c.spring_positions = msm.positions;
+  c.fem_report = fem.report;
+  c.spring_report = msm.report;
+  measure(c, 3);
   return c;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 /// A spring model against the FEM reference on one load case (Lloyd et al. 2007, Sec. 5).
 #include <hooke/calibrate/method.hpp>
+#include <hooke/calibrate/surface_model.hpp>
 #include <hooke/experiments/load_case.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
 
@@ -44,5 +45,15 @@ Comparison compare_model(const mesh::Mesh& mesh, const std::vector<material::Mat
 /// @throws InvalidArgument if a coarse node lies outside the fine mesh
 Comparison compare_across(const mesh::Mesh& coarse, const mesh::Mesh& fine, const material::Material& material,
                           const CompareOptions& options);
+
+/// Arnab & Raja's surface model of the closed surface `surface` against the FEM of the volume inside it,
+/// tetrahedralised radially from the surface model's centre (mesh::tetrahedralise_radially, `layers` layers; its
+/// boundary nodes are the surface's nodes). The load case is built on the tet mesh (clamped bottom, traction on
+/// the top facets); the surface model gets the same nodal forces and clamped nodes at its own nodes. Errors are
+/// over the surface nodes; `springs` stays empty, fem_mesh_positions are on the tet mesh.
+/// @param material  one homogeneous material (law taken from options.reference); options.method is ignored
+Comparison compare_surface(const mesh::Mesh& surface, const material::Material& material,
+                           const calibrate::SurfaceOptions& surface_options, const CompareOptions& options,
+                           int layers = 4);
 
 }  // namespace hooke::experiments
