@@ -14,6 +14,17 @@
 #endif
 
 namespace hooke::cli {
+namespace {
+
+// The spec files a report wrote for `figures` under `dir`/figures/.
+std::vector<std::filesystem::path> figure_specs(const std::string& dir,
+                                                const std::vector<experiments::Figure>& figures) {
+  std::vector<std::filesystem::path> specs;
+  for (const auto& f : figures) specs.push_back(std::filesystem::path(dir) / "figures" / (f.name + ".json"));
+  return specs;
+}
+
+}  // namespace
 
 Action add_reproduce_command(CLI::App& app) {
   struct Options {
@@ -38,8 +49,9 @@ Action add_reproduce_command(CLI::App& app) {
         std::printf("Table 2: %-12s surface %7.0f steps/s, volume %7.0f steps/s (dt %.3g ms); paper %g / %g FPS\n",
                     row.model.c_str(), row.surface_steps_per_second, row.volume_steps_per_second, row.dt * 1e3,
                     row.paper_surface_fps, row.paper_volume_fps);
-      std::printf("experiments: %.1f s\nwrote %s/arnab2008.md and arnab2008.json\n", report.seconds,
-                  o->out_dir.c_str());
+      std::printf("experiments: %.1f s\n", report.seconds);
+      if (!o->no_figures) plot_figures(figure_specs(o->out_dir, report.figures));
+      std::printf("wrote %s/arnab2008.md, arnab2008.json and %zu figures\n", o->out_dir.c_str(), report.figures.size());
       return 0;
     }
     if (o->paper != "lloyd2007")
@@ -54,12 +66,7 @@ Action add_reproduce_command(CLI::App& app) {
                 report.triangle.stretch_stiffness, report.triangle.compress_stiffness, report.square.stretch_stiffness,
                 report.square.compress_stiffness);
     std::printf("experiments: %.1f s\n", report.seconds);
-    if (!o->no_figures) {
-      std::vector<std::filesystem::path> specs;
-      for (const auto& f : report.figures)
-        specs.push_back(std::filesystem::path(o->out_dir) / "figures" / (f.name + ".json"));
-      plot_figures(specs);
-    }
+    if (!o->no_figures) plot_figures(figure_specs(o->out_dir, report.figures));
     std::printf("wrote %s/lloyd2007.md, lloyd2007.json and %zu figures\n", o->out_dir.c_str(), report.figures.size());
     return 0;
   };

@@ -1,7 +1,8 @@
-# hooke reproduce arnab2008 end to end: the report and its JSON are written, and the Young's modulus
+# hooke reproduce arnab2008 end to end: the report, its JSON and the figures are written, and the Young's modulus
 # re-extracted from every cube of Table 1 is within 5 % of the input (the issue's acceptance; the paper: 4.5 %).
 include(${CMAKE_CURRENT_LIST_DIR}/reproduce_common.cmake)
-run_reproduce(arnab2008 arnab2008.md arnab2008.json)
+run_reproduce(arnab2008 arnab2008.md arnab2008.json figures/fig08_refinement.png figures/fig10_volume_deviation.png
+              figures/fig12_shear.png)
 file(READ ${OUT}/arnab2008.json json)
 string(JSON rows LENGTH "${json}" table1)
 if(NOT rows EQUAL 6)
@@ -19,7 +20,8 @@ if(NOT rows2 EQUAL 4)
   message(FATAL_ERROR "Table 2 has ${rows2} rows, not 4")
 endif()
 file(READ ${OUT}/arnab2008.md md)
-foreach(needle "Table 1" "Table 2" "| 2402 nodes | 3250 Pa | 3110 Pa |" "sphere 1002")
+foreach(needle "Table 1" "Table 2" "| 2402 nodes | 3250 Pa | 3110 Pa |" "sphere 1002" "Fig. 9" "Fig. 11"
+               "figures/fig12_shear.png")
   string(FIND "${md}" "${needle}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "arnab2008.md lacks '${needle}'")

@@ -1,6 +1,7 @@
 // Arnab & Raja's figures as numbers: Fig. 10 (volume deviation per scheme) and Fig. 8 (displacement patterns
 // before and after a local refinement).
 #include <cmath>
+#include <cstdio>
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/experiments/detail/face_load.hpp>
 #include <hooke/experiments/reproduce_arnab2008.hpp>
@@ -99,7 +100,7 @@ std::vector<RefinementRow> arnab2008_fig8(double nu, int& sphere_nodes, int& ref
   return rows;
 }
 
-ShearComparison arnab2008_fig12(double nu) {
+ShearComparison arnab2008_fig12(double nu, Figure* figure) {
   const int n = 10;
   const double a = 0.1, e = 3250.0;
   ShearComparison out;
@@ -159,6 +160,14 @@ ShearComparison arnab2008_fig12(double nu) {
     }
   }
   out.top_mean_error_mm = top_sum / top_count;
+  if (figure) {
+    char title[160];
+    std::snprintf(title, sizeof title, "%.4g Pa: FEM max %.1f mm, ours %.1f mm", out.shear_stress, out.fem_max_mm,
+                  out.surface_max_mm);
+    DeformationPanel panel = deformation_panel(title, tets, rf.positions, s.mesh, rs.positions);
+    panel.axes = {0, 2};
+    *figure = {"fig12_shear", "Fig. 12: sheared cube, FEM black, surface model red", {panel}};
+  }
   return out;
 }
 
@@ -218,6 +227,34 @@ std::vector<WeightsRow> arnab2008_fig11(double nu) {
     rows.push_back(row);
   }
   return rows;
+}
+
+std::vector<Figure> arnab2008_curve_figures(const Arnab2008Report& r) {
+  CurvePanel deviation{"volume deviation under a point force", "force (mN)", "|V - V0| / V0 (%)", {}};
+  const char* styles[4] = {"s-", "^-", "o-", "D-"};
+  for (size_t k = 0; k < r.fig10.size(); ++k) {
+    Series series{"scheme " + r.fig10[k].scheme, styles[k % 4], {}, r.fig10[k].deviation_percent};
+    for (double f : r.fig10[k].force) series.x.push_back(1e3 * f);
+    deviation.series.push_back(series);
+  }
+  CurvePanel spread{"(a) standard deviation of the patterns", "force (mN)", "std (mm)", {}};
+  CurvePanel mean{"(b) mean displacement deviation", "force (mN)", "mean (mm)", {}};
+  for (const char* scheme : {"C", "D"}) {
+    Series a{std::string("scheme ") + scheme, scheme[0] == 'C' ? "o-" : "D-", {}, {}}, b = a;
+    for (const auto& row : r.fig8)
+      if (row.scheme == scheme) {
+        a.x.push_back(1e3 * row.force);
+        a.y.push_back(row.standard_deviation_mm);
+        b.x.push_back(1e3 * row.force);
+        b.y.push_back(row.mean_deviation_mm);
+      }
+    spread.series.push_back(a);
+    mean.series.push_back(b);
+  }
+  return {{"fig08_refinement",
+           "Arnab & Raja Fig. 8: displacement patterns before and after a local refinement",
+           {spread, mean}},
+          {"fig10_volume_deviation", "Arnab & Raja Fig. 10: volume deviation per scheme", {deviation}}};
 }
 
 }  // namespace hooke::experiments

@@ -60,7 +60,8 @@ void write_markdown(std::ostream& out, const Arnab2008Report& r) {
          "under gravity. Volumetric model: lloyd-tet springs (nu = 1/4, their exact value) on the tetrahedralised "
          "object (tet_box for the cubes, "
          "six radial layers for the sphere). The paper's columns are frames per second of its whole application "
-         "(Pentium 4, 2.4 GHz).\n\n"
+         "(Pentium 4, 2.4 GHz). Timings need a quiet machine: the volumetric model's force pass runs on two "
+         "threads, which other busy processes slow down most.\n\n"
       << "| model | surface nodes | volume nodes | dt | surface, steps/s | volume, steps/s | ratio | paper: surface / "
          "volume FPS |\n"
       << "|---|---|---|---|---|---|---|---|\n";
@@ -79,7 +80,8 @@ void write_markdown(std::ostream& out, const Arnab2008Report& r) {
     for (double d : row.deviation_percent) out << " | " << fmt("%.3f", d) << " %";
     out << " | **" << fmt("%.3f", row.average_percent) << " %** |\n";
   }
-  out << "\nAs in the paper, the full scheme D deviates least. A and B coincide here: they differ only in the "
+  out << "\n![Fig. 10](figures/fig10_volume_deviation.png)\n\nAs in the paper, the full scheme D deviates least. A and "
+         "B coincide here: they differ only in the "
          "masses, which a static test does not see (the paper's measurement was dynamic).\n\n"
       << "## Fig. 8: displacement patterns before and after a local refinement\n\n"
       << "The same sphere with E = 10 Pa (the paper's), refined around the top node (2 cm: " << r.sphere_nodes << " -> "
@@ -95,7 +97,7 @@ void write_markdown(std::ostream& out, const Arnab2008Report& r) {
   out << "\nUnlike the paper's Fig. 8 (b), where scheme D's deviation stays flat while C's grows with the force, "
          "ours grow with the force for both and differ by about 1 %: near the pole the load is normal to "
          "the surface, where the blend gives K_E like scheme C. The re-estimation keeps the patterns within "
-         "0.24-0.29 of the loaded node's displacement (std / peak).\n";
+         "0.24-0.29 of the loaded node's displacement (std / peak).\n\n![Fig. 8](figures/fig08_refinement.png)\n";
   const ShearComparison& c = r.fig12;
   out << "\n## Fig. 12: shear on a cube against the FEM\n\n"
       << "The " << c.surface_nodes << "-node cube (E = " << fmt("%g", c.youngs_modulus) << " Pa), bottom face fixed, a "
@@ -112,7 +114,7 @@ void write_markdown(std::ostream& out, const Arnab2008Report& r) {
          "its rest place in the world, so the sheared top face behaves like a layer of depth L' = a/2 tied to the "
          "centre (a top node moves by tau L' / G, G = E / (2 (1 + nu))), not like a cube clamped at its base, which "
          "shears over its whole height and bends. The anchors are world-fixed by the paper's design (Eq. 2), so this "
-         "is the model, not a bug; we report it as measured.\n";
+         "is the model, not a bug; we report it as measured.\n\n![Fig. 12](figures/fig12_shear.png)\n";
   out << "\n## Fig. 9: gravity, schemes B and D\n\n"
       << "The sphere with E = 10 kPa (sagging by a few per cent of its radius), 1000 kg/m^3, gravity along -z, "
          "static equilibrium. The spread is the standard deviation of the nodes' downward displacement over its "
@@ -156,6 +158,7 @@ void write_arnab2008_report(const std::filesystem::path& dir, const Arnab2008Rep
                             {"fig8_sphere_nodes", {r.sphere_nodes, r.refined_sphere_nodes}}};
   write_file_atomically(dir / "arnab2008.json", [&](std::ostream& out) { out << j.dump(2) << "\n"; });
   write_file_atomically(dir / "arnab2008.md", [&](std::ostream& out) { write_markdown(out, r); });
+  for (const Figure& f : r.figures) write_figure_spec(dir / "figures", f);
 }
 
 }  // namespace hooke::experiments

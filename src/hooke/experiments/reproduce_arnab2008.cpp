@@ -158,9 +158,12 @@ Arnab2008Report reproduce_arnab2008() {
   r.table2 = arnab2008_table2(r.poisson_ratio);
   r.fig10 = arnab2008_fig10(r.poisson_ratio);
   r.fig8 = arnab2008_fig8(r.poisson_ratio, r.sphere_nodes, r.refined_sphere_nodes);
-  r.fig12 = arnab2008_fig12(r.poisson_ratio);
+  Figure shear;
+  r.fig12 = arnab2008_fig12(r.poisson_ratio, &shear);
   r.fig9 = arnab2008_fig9(r.poisson_ratio);
   r.fig11 = arnab2008_fig11(r.poisson_ratio);
+  r.figures = arnab2008_curve_figures(r);
+  r.figures.push_back(shear);
   r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return r;
 }

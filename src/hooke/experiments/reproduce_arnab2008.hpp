@@ -2,6 +2,7 @@
 /// The experiments of Arnab & Raja ("A Deformable Surface Model for Soft Volume Simulation") as data: each
 /// table is a function that builds its meshes, runs its cases and returns our numbers beside the paper's.
 #include <filesystem>
+#include <hooke/experiments/figure.hpp>
 #include <string>
 #include <vector>
 
@@ -89,6 +90,7 @@ struct Arnab2008Report {
   ShearComparison fig12;
   std::vector<GravityRow> fig9;
   std::vector<WeightsRow> fig11;
+  std::vector<Figure> figures;                     ///< drawn by scripts/plot_figures.py into figures/<name>.png
   int sphere_nodes = 0, refined_sphere_nodes = 0;  ///< Fig. 8's sphere before and after refinement
   double seconds = 0.0;
 };
@@ -103,15 +105,18 @@ std::vector<VolumeDeviationRow> arnab2008_fig10(double poisson_ratio = 0.3);
 /// Fig. 8 on the same sphere (E = 10 Pa, the paper's): refine around the top node, compare the displacement of
 /// the original nodes within 2 cm of it, schemes C and D, over force magnitudes. Fills the node counts.
 std::vector<RefinementRow> arnab2008_fig8(double poisson_ratio, int& sphere_nodes, int& refined_nodes);
-/// Fig. 12 on the 602-node cube (E = 3.25 kPa), a shear stress of 5 % of E along x on the top face.
-ShearComparison arnab2008_fig12(double poisson_ratio);
+/// Fig. 12 on the 602-node cube (E = 3.25 kPa), a shear stress of 5 % of E along x on the top face. With
+/// `figure`, also the side view of both deformed shapes (FEM black, surface model red).
+ShearComparison arnab2008_fig12(double poisson_ratio, Figure* figure = nullptr);
 /// Fig. 9 on the 5 cm sphere (E = 10 kPa, so that it sags by about 5 % of its radius; 1000 kg/m^3), schemes B, D.
 std::vector<GravityRow> arnab2008_fig9(double poisson_ratio);
 /// Fig. 11 on the 5 cm sphere (E = 100 Pa), a 5 mN push on the top node.
 std::vector<WeightsRow> arnab2008_fig11(double poisson_ratio);
 /// Runs everything.
 Arnab2008Report reproduce_arnab2008();
-/// Writes `dir`/arnab2008.md and arnab2008.json (atomically).
+/// Curve figures of Fig. 8 and Fig. 10 from their rows.
+std::vector<Figure> arnab2008_curve_figures(const Arnab2008Report& report);
+/// Writes `dir`/arnab2008.md and arnab2008.json and the figure specs `dir`/figures/<name>.json (atomically).
 void write_arnab2008_report(const std::filesystem::path& dir, const Arnab2008Report& report);
 
 }  // namespace hooke::experiments
