@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <hooke/calibrate/method.hpp>
+#include <hooke/calibrate/surface_model.hpp>
 #include <hooke/experiments/load_case.hpp>
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/mesh/generators.hpp>
@@ -143,6 +144,37 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{Integrator::kImplicitEuler, NewtonLinearSolver::kConjugateGradient, true},
                       Case{Integrator::kVelocityVerlet, NewtonLinearSolver::kCholesky, true}),
     case_name);
+
+// The surface model (scheme D: blended anchors, the volume penalty with the interaction weights following the
+// probe) steps without heap allocation too, explicitly and with implicit Euler (residual line search).
+TEST(SurfaceStepAllocation, NoHeapAllocationAfterTheFirstStep) {
+  for (const Integrator integrator : {Integrator::kSymplecticEuler, Integrator::kImplicitEuler}) {
+    const calibrate::SurfaceModel s =
+        calibrate::make_surface_model(mesh::uv_sphere_surface(12, 20, 0.05), {material::Law::kLinear, 1000.0, 0.3});
+    s.volume->set_interaction({s.mesh.nodes.row(0).transpose(), Vec3(0, 0, -1), 0.1});
+    VecX gravity = VecX::Zero(3);
+    gravity(2) = -9.81;
+    SimulatorOptions options;
+    options.integrator = integrator;
+    options.linear_solver = NewtonLinearSolver::kConjugateGradient;
+    Simulator sim(model::make_problem(s.model), {s.masses, gravity, 2.0, 0.0}, options);
+    Probe probe{{0}, false, VecX(), Vec3(0.0, 0.0, 0.0)};
+    const double dt = integrator == Integrator::kSymplecticEuler ? 0.5 * sim.stable_time_step() : 1e-3;
+    sim.set_probe(probe);
+    sim.step(dt);
+    sim.step(dt);
+    g_allocations = 0;
+    g_counting = true;
+    for (int k = 0; k < 20; ++k) {
+      probe.force(2) = -1e-4 * k;
+      sim.set_probe(probe);
+      sim.step(dt);
+    }
+    g_counting = false;
+    EXPECT_EQ(g_allocations.load(), 0) << integrator_name(integrator);
+    EXPECT_TRUE(sim.positions().allFinite());
+  }
+}
 
 }  // namespace
 }  // namespace hooke::solve

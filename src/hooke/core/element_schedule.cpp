@@ -50,13 +50,18 @@ ElementSchedule::ElementSchedule(const RowMatXi& elements) {
 
 void ElementSchedule::for_each_chunk(FunctionRef<void(std::span<const int>, int)> fn) const {
   const int chunks = chunk_count();
+  auto run = [&](int c) {
+    const auto begin = static_cast<size_t>(m_chunk_start[static_cast<size_t>(c)]);
+    const auto end = static_cast<size_t>(m_chunk_start[static_cast<size_t>(c) + 1]);
+    if (end > begin) fn(std::span<const int>(m_order.data() + begin, end - begin), c);
+  };
   for (int phase = 0; phase < 2; ++phase) {
-#pragma omp parallel for schedule(static) if (m_parallel)
-    for (int c = phase; c < chunks; c += 2) {
-      const auto begin = static_cast<size_t>(m_chunk_start[static_cast<size_t>(c)]);
-      const auto end = static_cast<size_t>(m_chunk_start[static_cast<size_t>(c) + 1]);
-      if (end > begin) fn(std::span<const int>(m_order.data() + begin, end - begin), c);
+    if (!m_parallel) {  // a serial loop: libgomp allocates for a parallel region even when its if clause is false
+      for (int c = phase; c < chunks; c += 2) run(c);
+      continue;
     }
+#pragma omp parallel for schedule(static)
+    for (int c = phase; c < chunks; c += 2) run(c);
   }
 }
 

@@ -68,7 +68,7 @@ struct Simulator::Impl {
   SimulatorOptions opt;
   Eigen::Index nd = 0;
   // State and work vectors, sized once (step() allocates nothing after the first call).
-  VecX x, v, x_n, x_hat, y, trial, grad, delta, rhs, f_total, acc, damp_in, damp_out;
+  VecX x, v, x_n, x_hat, y, trial, grad, grad_trial, delta, rhs, f_total, acc, damp_in, damp_out;
   bool gradient_valid = false;  // grad holds dE/dx at x (explicit steps)
   double time_s = 0.0;
   std::unique_ptr<model::HessianAssembly> assembly;  // fixed-pattern Hessian (implicit steps, K0)
@@ -96,7 +96,8 @@ struct Simulator::Impl {
 
   Impl(model::Problem p, Dynamics d, SimulatorOptions o)
       : problem(std::move(p)), dyn(std::move(d)), opt(o), nd(problem.model->dof_count()) {
-    for (VecX* w : {&x, &v, &x_n, &x_hat, &y, &trial, &grad, &delta, &rhs, &f_total, &acc, &damp_in, &damp_out})
+    for (VecX* w :
+         {&x, &v, &x_n, &x_hat, &y, &trial, &grad, &grad_trial, &delta, &rhs, &f_total, &acc, &damp_in, &damp_out})
       w->setZero(nd);
   }
 
@@ -336,7 +337,8 @@ struct Simulator::Impl {
     for (Eigen::Index i = 0; i < nd; ++i)
       if (!fixed(i)) load += f_total(i) * f_total(i);
     const double scale = std::sqrt(load) + grad.norm() + 1e-30;
-    double phi = objective(y, w, dt);
+    const bool potential = model().conservative();
+    double phi = potential ? objective(y, w, dt) : 0.0;
     double previous = std::numeric_limits<double>::infinity();
     int it = 0;
     for (; it < opt.max_newton_iterations; ++it) {
@@ -365,7 +367,7 @@ struct Simulator::Impl {
       previous = reuse ? r.residual : std::numeric_limits<double>::infinity();
       double alpha = 1.0;
       const double slope = grad.dot(delta);
-      if (!(slope < 0.0)) {
+      if (potential && !(slope < 0.0)) {
         if (!reuse) break;
         have_factor = false;
         continue;
@@ -373,11 +375,21 @@ struct Simulator::Impl {
       bool accepted = false;
       for (int ls = 0; ls < 40; ++ls) {
         trial = y + alpha * delta;
-        const double p = objective(trial, w, dt);
-        if (std::isfinite(p) && p <= phi + 1e-4 * alpha * slope) {
-          phi = p;
-          accepted = true;
-          break;
+        if (potential) {
+          const double p = objective(trial, w, dt);
+          if (std::isfinite(p) && p <= phi + 1e-4 * alpha * slope) {
+            phi = p;
+            accepted = true;
+            break;
+          }
+        } else {
+          // No potential (the surface model's blended anchors): backtrack on the residual norm.
+          objective_gradient(trial, w, dt, grad_trial);
+          const double rt = grad_trial.norm();
+          if (std::isfinite(rt) && rt <= (1.0 - 1e-4 * alpha) * r.residual) {
+            accepted = true;
+            break;
+          }
         }
         alpha *= 0.5;
       }
@@ -620,14 +632,6 @@ Simulator::Simulator(model::Problem problem, Dynamics dynamics, SimulatorOptions
     throw InvalidArgument("Simulator: gravity needs one component per axis");
   if (m->dyn.mass_damping < 0.0 || m->dyn.stiffness_damping < 0.0)
     throw InvalidArgument("Simulator: Rayleigh damping coefficients must be >= 0");
-  const bool needs_potential = options.integrator == Integrator::kImplicitEuler ||
-                               options.integrator == Integrator::kQuasiStatic ||
-                               options.integrator == Integrator::kLocalGlobal;
-  if (needs_potential && !m->model().conservative())
-    throw InvalidArgument(std::string(integrator_name(options.integrator)) +
-                          " minimises an energy, and this model's forces have none (e.g. the surface model's "
-                          "blended anchors or nodal volume force): use an explicit integrator, or the conservative "
-                          "variant (tensor anchors, energy volume force)");
   if (m->dyn.stiffness_damping > 0.0) m->rest_stiffness();
   if (options.integrator == Integrator::kLocalGlobal) m->setup_local_global();
   m->base_fixed = m->problem.fixed_dofs;
