@@ -22,7 +22,8 @@ namespace {
 
 struct CompareCli {
   ModelInput in;
-  std::string method = "lloyd-tet", load = "stretch", reference = "linear", out_dir, plane = "stress", scheme = "D";
+  std::string method = "lloyd-tet", load = "stretch", reference = "linear", out_dir, plane = "stress";
+  SurfaceInput surface;
   int layers = 4;
   bool no_figure = false;
   double traction = std::nan(""), strain = std::nan("");
@@ -48,19 +49,19 @@ int run_compare(const CompareCli& o) {
   mesh::Mesh fem_mesh = m;
   if (surface) {
     // Arnab & Raja's surface model against the FEM of the radially tetrahedralised volume.
-    calibrate::SurfaceOptions so;
-    so.scheme = calibrate::surface_scheme_from_name(o.scheme);
+    const calibrate::SurfaceOptions so = surface_options(o.surface);
     c = experiments::compare_surface(m, mat, so, co, o.layers);
     surface::check_closed_surface(fem_mesh);
-    fem_mesh = mesh::tetrahedralise_radially(fem_mesh, surface::volume_centroid(fem_mesh), o.layers);
+    fem_mesh =
+        mesh::tetrahedralise_radially(fem_mesh, so.centre ? *so.centre : surface::volume_centroid(fem_mesh), o.layers);
   } else {
     c = experiments::compare(m, {mat}, co);
   }
   const double to_unit = 1.0 / ro.metres_per_unit;
   if (surface)
     std::printf("hooke compare: %s, surface model (scheme %s) vs %s FEM of %d tets, %s, traction %.6g Pa\n",
-                o.in.mesh_path.c_str(), o.scheme.c_str(), o.reference.c_str(), fem_mesh.element_count(), o.load.c_str(),
-                c.load.traction_pa);
+                o.in.mesh_path.c_str(), o.surface.scheme.c_str(), o.reference.c_str(), fem_mesh.element_count(),
+                o.load.c_str(), c.load.traction_pa);
   else
     std::printf("hooke compare: %s, %s springs (%zu) vs %s FEM, %s, traction %.6g Pa\n", o.in.mesh_path.c_str(),
                 o.method.c_str(), c.springs.pairs.size(), o.reference.c_str(), o.load.c_str(), c.load.traction_pa);
@@ -109,7 +110,7 @@ Action add_compare_command(CLI::App& app) {
                   "lloyd-tet, lloyd-tet-volume, stiffness-fit, stiffness-fit-volume), or surface for Arnab & "
                   "Raja's surface model of a closed triangle surface")
       ->capture_default_str();
-  cmd->add_option("--scheme", o->scheme, "surface: scheme A, B, C or D")->capture_default_str();
+  add_surface_options(cmd, o->surface);
   cmd->add_option("--layers", o->layers, "surface: layers of the radial tetrahedralisation for the FEM")
       ->capture_default_str();
   cmd->add_option("--load", o->load, "stretch, compress or shear")->capture_default_str();

@@ -30,7 +30,8 @@ namespace {
 struct SimulateCli {
   ModelInput in;
   std::string method = "lloyd-tet", law = "stvk", integrator = "implicit-euler", linear_solver = "cholesky",
-              global_solve = "direct", scheme = "D", anchor_law, volume_force = "nodal", out_dir;
+              global_solve = "direct", out_dir;
+  SurfaceInput surface;
   double density = 1000.0, dt = 1e-3, damping_mass = 0.0, damping_stiffness = 0.0, influence_radius = 0.0;
   int steps = 100, every = 0, probe_node = -1, iterations = 10;
   bool gravity = false, free_body = false, no_reorder = false;
@@ -69,11 +70,8 @@ int run_simulate(const SimulateCli& o) {
   const surface::VolumePenaltyBlock* volume = nullptr;
   if (o.method == "surface") {
     // Arnab & Raja's surface model (docs/surface.md): the anchors hold the body, no node is clamped.
-    calibrate::SurfaceOptions so;
-    so.scheme = calibrate::surface_scheme_from_name(o.scheme);
+    calibrate::SurfaceOptions so = surface_options(o.surface);
     so.density = o.density;
-    if (!o.anchor_law.empty()) so.anchor_law = surface::anchor_law_from_name(o.anchor_law);
-    so.volume_force = surface::volume_force_from_name(o.volume_force);
     const calibrate::SurfaceModel s = calibrate::make_surface_model(m, mat, so);
     model = s.model;
     masses = s.masses;
@@ -202,9 +200,7 @@ Action add_simulate_command(CLI::App& app) {
                   "Calibration method, fem for the FEM model, or surface for Arnab & Raja's surface model (a closed "
                   "triangle surface)")
       ->capture_default_str();
-  cmd->add_option("--scheme", o->scheme, "surface: scheme A, B, C or D")->capture_default_str();
-  cmd->add_option("--anchor-law", o->anchor_law, "surface: single, blend or tensor (default: the scheme's)");
-  cmd->add_option("--volume-force", o->volume_force, "surface: nodal, printed or energy")->capture_default_str();
+  add_surface_options(cmd, o->surface);
   cmd->add_option("--influence-radius", o->influence_radius,
                   "surface: radius of influence of the probe's interaction weights (Eq. 4), m (default: half the "
                   "bounding-box diagonal)");

@@ -2,7 +2,9 @@
 // Sub-commands of the hooke tool. Each registers its options on `app` and returns the action to run.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <hooke/calibrate/surface_model.hpp>
 #include <string>
+#include <vector>
 
 namespace hooke::cli {
 
@@ -16,6 +18,17 @@ struct ModelInput {
 
 /// Registers MESH, --young, --poisson, --unit and --thickness on `cmd`, bound to `in`.
 void add_model_input_options(CLI::App* cmd, ModelInput& in);
+
+/// The surface model's options (`--method surface`): scheme, readings of the paper's equations, centre.
+struct SurfaceInput {
+  std::string scheme = "D", anchor_law, volume_force = "nodal";
+  std::vector<double> centre;  ///< x,y,z in m, or empty for the volume centroid
+};
+/// Registers --scheme, --anchor-law, --volume-force and --centre on `cmd`.
+void add_surface_options(CLI::App* cmd, SurfaceInput& in);
+/// The library options they select (density, mass and thickness left at their defaults).
+/// @throws InvalidArgument for an unknown name or a centre without three components
+calibrate::SurfaceOptions surface_options(const SurfaceInput& in);
 
 /// `hooke fem`: linear or nonlinear FEM reference solve of a load case.
 Action add_fem_command(CLI::App& app);

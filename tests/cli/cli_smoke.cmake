@@ -80,6 +80,11 @@ message("${out}${err}")
 if(NOT rc EQUAL 0 OR NOT out MATCHES "surface model \\(scheme C\\)" OR NOT EXISTS ${OUT}/cmp_surface/compare.vtu)
   message(FATAL_ERROR "hooke compare --method surface failed: ${rc}")
 endif()
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/sphere_surface.msh --young 1000 --poisson 0.3 --method surface
+                        --centre 5,0,0 --steps 2 -o ${OUT}/sim_surface_outside RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "not star-shaped from it")
+  message(FATAL_ERROR "a centre outside the body must fail with exit code 2 (got ${rc}: ${err})")
+endif()
 execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 1000 --poisson 0.3 --method surface --steps 2
                         -o ${OUT}/sim_surface_tets RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 2 OR NOT err MATCHES "closed triangle surface")
