@@ -1,8 +1,8 @@
 # hooke reproduce arnab2008 end to end: the report, its JSON and the figures are written, and the Young's modulus
 # re-extracted from every cube of Table 1 is within 5 % of the input (the issue's acceptance; the paper: 4.5 %).
 include(${CMAKE_CURRENT_LIST_DIR}/reproduce_common.cmake)
-run_reproduce(arnab2008 arnab2008.md arnab2008.json figures/fig08_refinement.png figures/fig10_volume_deviation.png
-              figures/fig12_shear.png)
+run_reproduce(arnab2008 arnab2008.md arnab2008.json figures/fig08_refinement.png figures/fig09_gravity.png
+              figures/fig10_volume_deviation.png figures/fig11_weights.png figures/fig12_shear.png)
 file(READ ${OUT}/arnab2008.json json)
 string(JSON rows LENGTH "${json}" table1)
 if(NOT rows EQUAL 6)

@@ -33,6 +33,18 @@ VecX pushed(const calibrate::SurfaceModel& s, int node, double force) {
 
 mesh::Mesh sphere() { return mesh::uv_sphere_surface(12, 20, kRadius); }  // 222 nodes, irregular near the poles
 
+// Side view (x across, z up) of a surface at rest (grey) and deformed (red), displacements times `magnify`.
+DeformationPanel shape_panel(const std::string& title, const mesh::Mesh& m, const VecX& rest, const VecX& deformed,
+                             double magnify) {
+  DeformationPanel p;
+  p.title = title;
+  p.axes = {0, 2};
+  const VecX shown = rest + magnify * (deformed - rest);
+  p.drawings.push_back({"rest", "lightgrey", 0.3, drawing_edges(m), m.nodes});
+  p.drawings.push_back({"deformed", "red", 0.4, drawing_edges(m), mesh::positions_as_rows(shown, 3)});
+  return p;
+}
+
 }  // namespace
 
 std::vector<VolumeDeviationRow> arnab2008_fig10(double nu) {
@@ -171,8 +183,9 @@ ShearComparison arnab2008_fig12(double nu, Figure* figure) {
   return out;
 }
 
-std::vector<GravityRow> arnab2008_fig9(double nu) {
+std::vector<GravityRow> arnab2008_fig9(double nu, Figure* figure) {
   std::vector<GravityRow> rows;
+  std::vector<std::variant<DeformationPanel, CurvePanel>> panels;
   for (calibrate::SurfaceScheme scheme : {calibrate::SurfaceScheme::kB, calibrate::SurfaceScheme::kD}) {
     calibrate::SurfaceOptions o;
     o.scheme = scheme;
@@ -194,12 +207,17 @@ std::vector<GravityRow> arnab2008_fig9(double nu) {
     row.volume_deviation_percent =
         100.0 * std::abs(surface::enclosed_volume(s.mesh.elements, r.positions) / s.discretisation.volume - 1.0);
     rows.push_back(row);
+    if (figure)
+      panels.push_back(shape_panel("scheme " + row.scheme + " (displacements x 20)", s.mesh, s.model->rest_positions(),
+                                   r.positions, 20.0));
   }
+  if (figure) *figure = {"fig09_gravity", "Fig. 9: gravity on the sphere, schemes B and D", panels};
   return rows;
 }
 
-std::vector<WeightsRow> arnab2008_fig11(double nu) {
+std::vector<WeightsRow> arnab2008_fig11(double nu, Figure* figure) {
   std::vector<WeightsRow> rows;
+  std::vector<std::variant<DeformationPanel, CurvePanel>> panels;
   for (const bool run_time : {false, true}) {
     const calibrate::SurfaceModel s = calibrate::make_surface_model(sphere(), {material::Law::kLinear, 100.0, nu});
     model::Problem p = model::make_problem(s.model);
@@ -225,7 +243,10 @@ std::vector<WeightsRow> arnab2008_fig11(double nu) {
     row.volume_deviation_percent =
         100.0 * std::abs(surface::enclosed_volume(s.mesh.elements, r.positions) / s.discretisation.volume - 1.0);
     rows.push_back(row);
+    if (figure)
+      panels.push_back(shape_panel(row.weights + " weights", s.mesh, s.model->rest_positions(), r.positions, 1.0));
   }
+  if (figure) *figure = {"fig11_weights", "Fig. 11: a push on the top node, uniform and run-time weights", panels};
   return rows;
 }
 

@@ -124,7 +124,7 @@ void write_markdown(std::ostream& out, const Arnab2008Report& r) {
   for (const auto& row : r.fig9)
     out << "| " << row.scheme << " | " << fmt("%.3f", row.mean_sag_mm) << " mm | "
         << fmt("%.1f", row.sag_spread_percent) << " % | " << fmt("%.3f", row.volume_deviation_percent) << " % |\n";
-  out << "\n## Fig. 11: uniform against run-time weights\n\n"
+  out << "\n![Fig. 9](figures/fig09_gravity.png)\n\n## Fig. 11: uniform against run-time weights\n\n"
       << "Scheme D on the sphere (E = 100 Pa), a 5 mN push down on the top node; the volume penalty with w_i = 1 "
          "along the normals, and with the Eq. 4 weights (radius of influence 2 R) along p_i - p_f.\n\n"
       << "| weights | pushed node | opposite pole (down) | equator (outward) | volume deviation |\n"
@@ -135,7 +135,7 @@ void write_markdown(std::ostream& out, const Arnab2008Report& r) {
         << fmt("%.3f", row.volume_deviation_percent) << " % |\n";
   out << "\nUniform weights push every node out along its normal, the opposite pole included (a global "
          "inflation); the run-time weights leave the far side alone and push the equator out, away from the "
-         "interaction: the directed bulge of the paper's Fig. 11 (b).\n";
+         "interaction: the directed bulge of the paper's Fig. 11 (b).\n\n![Fig. 11](figures/fig11_weights.png)\n";
 }
 
 }  // namespace

@@ -160,10 +160,13 @@ Arnab2008Report reproduce_arnab2008() {
   r.fig8 = arnab2008_fig8(r.poisson_ratio, r.sphere_nodes, r.refined_sphere_nodes);
   Figure shear;
   r.fig12 = arnab2008_fig12(r.poisson_ratio, &shear);
-  r.fig9 = arnab2008_fig9(r.poisson_ratio);
-  r.fig11 = arnab2008_fig11(r.poisson_ratio);
+  Figure gravity, weights;
+  r.fig9 = arnab2008_fig9(r.poisson_ratio, &gravity);
+  r.fig11 = arnab2008_fig11(r.poisson_ratio, &weights);
   r.figures = arnab2008_curve_figures(r);
   r.figures.push_back(shear);
+  r.figures.push_back(gravity);
+  r.figures.push_back(weights);
   r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return r;
 }

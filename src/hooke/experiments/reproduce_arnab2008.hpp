@@ -109,9 +109,11 @@ std::vector<RefinementRow> arnab2008_fig8(double poisson_ratio, int& sphere_node
 /// `figure`, also the side view of both deformed shapes (FEM black, surface model red).
 ShearComparison arnab2008_fig12(double poisson_ratio, Figure* figure = nullptr);
 /// Fig. 9 on the 5 cm sphere (E = 10 kPa, so that it sags by about 5 % of its radius; 1000 kg/m^3), schemes B, D.
-std::vector<GravityRow> arnab2008_fig9(double poisson_ratio);
+/// With `figure`, also side views of both deformed shapes (displacements magnified 20 times).
+std::vector<GravityRow> arnab2008_fig9(double poisson_ratio, Figure* figure = nullptr);
 /// Fig. 11 on the 5 cm sphere (E = 100 Pa), a 5 mN push on the top node.
-std::vector<WeightsRow> arnab2008_fig11(double poisson_ratio);
+/// With `figure`, also side views of both deformed shapes.
+std::vector<WeightsRow> arnab2008_fig11(double poisson_ratio, Figure* figure = nullptr);
 /// Runs everything.
 Arnab2008Report reproduce_arnab2008();
 /// Curve figures of Fig. 8 and Fig. 10 from their rows.
