@@ -39,6 +39,11 @@ double volume_and_gradient(const RowMatXi& tri, const Eigen::Ref<const VecX>& x,
   return v;
 }
 
+void require_valid(const Interaction& interaction) {
+  if (!(interaction.radius > 0.0) || !(interaction.direction.norm() > 0.0))
+    throw InvalidArgument("an interaction needs a radius of influence > 0 and a non-zero force direction");
+}
+
 void fill_weights(const Eigen::Ref<const VecX>& x, const Interaction& in, VecX& w) {
   const Eigen::Index n = x.size() / 3;
   w.setZero(n);
@@ -72,8 +77,7 @@ std::string_view volume_force_name(VolumeForce force) { return kNames.name(force
 VolumeForce volume_force_from_name(std::string_view name) { return kNames.from_name(name); }
 
 VecX interaction_weights(const Eigen::Ref<const VecX>& x, const Interaction& interaction) {
-  if (!(interaction.radius > 0.0) || !(interaction.direction.norm() > 0.0))
-    throw InvalidArgument("an interaction needs a radius of influence > 0 and a non-zero force direction");
+  require_valid(interaction);
   VecX w;
   fill_weights(x, interaction, w);
   return w;
@@ -98,8 +102,7 @@ VolumePenaltyBlock::VolumePenaltyBlock(RowMatXi triangles, double rest_volume, V
 }
 
 void VolumePenaltyBlock::set_interaction(const Interaction& interaction) const {
-  if (!(interaction.radius > 0.0) || !(interaction.direction.norm() > 0.0))
-    throw InvalidArgument("an interaction needs a radius of influence > 0 and a non-zero force direction");
+  require_valid(interaction);
   m_interaction = interaction;
   m_interacting = true;
 }
