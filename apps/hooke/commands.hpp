@@ -1,7 +1,9 @@
 #pragma once
 // Sub-commands of the hooke tool. Each registers its options on `app` and returns the action to run.
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <functional>
+#include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/calibrate/surface_model.hpp>
 #include <string>
 #include <vector>
@@ -30,6 +32,20 @@ void add_surface_options(CLI::App* cmd, SurfaceInput& in);
 /// @throws InvalidArgument for an unknown name or a centre without three components
 calibrate::SurfaceOptions surface_options(const SurfaceInput& in);
 
+/// Where a command's model comes from: a model file (--model), or a mesh calibrated by --method from E, nu.
+struct ModelSource {
+  std::string mesh_path, unit = "m", model_path, method = "lloyd-tet", law = "linear", plane = "stress";
+  double young = std::nan(""), poisson = std::nan(""), thickness = 1e-3, density = 1000.0;  ///< NaN: not given
+  SurfaceInput surface;
+};
+/// Registers [MESH], --model, --young, --poisson, --method, --unit, --thickness, --density, --plane and the
+/// surface options on `cmd`, bound to `in`.
+void add_model_source_options(CLI::App* cmd, ModelSource& in);
+/// The model `in` names: read from --model (checked against MESH when one is given too), or calibrated on MESH
+/// by the library's model factory.
+/// @throws InvalidArgument when neither or a conflicting combination is given
+calibrate::CalibratedModel load_model(const ModelSource& in);
+
 /// `hooke fem`: linear or nonlinear FEM reference solve of a load case.
 Action add_fem_command(CLI::App& app);
 /// `hooke compare`: a calibrated spring model against the FEM reference.
@@ -40,6 +56,8 @@ Action add_reproduce_command(CLI::App& app);
 Action add_simulate_command(CLI::App& app);
 /// `hooke bench`: the dynamics benchmark table.
 Action add_bench_command(CLI::App& app);
+/// `hooke calibrate`: writes a calibrated model (.json, .vtu, .csv), optionally certified against FEM.
+Action add_calibrate_command(CLI::App& app);
 /// `hooke mesh info|convert`: inspect and convert meshes.
 Action add_mesh_command(CLI::App& app);
 

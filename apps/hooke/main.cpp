@@ -1,19 +1,22 @@
 // hooke: command-line front end. Thin: every computation is a library call.
 #include <cstdio>
 #include <hooke/core/error.hpp>
+#include <hooke/core/version.hpp>
+#include <string>
 
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"hooke: mass-spring models calibrated from E and nu, validated against FEM"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "hooke 0.1.0");
+  app.set_version_flag("--version", "hooke " + std::string(hooke::kVersion));
   const hooke::cli::Action fem = hooke::cli::add_fem_command(app);
   const hooke::cli::Action mesh = hooke::cli::add_mesh_command(app);
   const hooke::cli::Action compare = hooke::cli::add_compare_command(app);
   const hooke::cli::Action reproduce = hooke::cli::add_reproduce_command(app);
   const hooke::cli::Action simulate = hooke::cli::add_simulate_command(app);
   const hooke::cli::Action bench = hooke::cli::add_bench_command(app);
+  const hooke::cli::Action calibrate = hooke::cli::add_calibrate_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -27,6 +30,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("reproduce")) return reproduce();
     if (app.got_subcommand("simulate")) return simulate();
     if (app.got_subcommand("bench")) return bench();
+    if (app.got_subcommand("calibrate")) return calibrate();
   } catch (const hooke::SolverFailure& e) {
     std::fprintf(stderr, "hooke: solver failure: %s\n", e.what());
     return 3;

@@ -1,4 +1,8 @@
+#include <hooke/calibrate/model_factory.hpp>
+#include <hooke/calibrate/model_file.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/core/units.hpp>
+#include <hooke/io/mesh_io.hpp>
 
 #include "commands.hpp"
 
@@ -31,6 +35,49 @@ calibrate::SurfaceOptions surface_options(const SurfaceInput& in) {
     o.centre = Vec3(in.centre[0], in.centre[1], in.centre[2]);
   }
   return o;
+}
+
+void add_model_source_options(CLI::App* cmd, ModelSource& in) {
+  cmd->add_option("mesh", in.mesh_path, "Mesh file (.msh, .vtu, .node/.ele, .obj, .off, .stl); optional with --model");
+  cmd->add_option("--model", in.model_path,
+                  "Model file (.json, from hooke calibrate or written by hand) instead of "
+                  "--method, --young and --poisson");
+  cmd->add_option("--young", in.young, "Young's modulus E, Pa");
+  cmd->add_option("--poisson", in.poisson, "Poisson's ratio nu, in (-1, 0.5)");
+  std::string methods;
+  for (const auto& n : calibrate::model_method_names()) methods += (methods.empty() ? "" : ", ") + n;
+  cmd->add_option("--method", in.method, "Model: " + methods)->capture_default_str();
+  cmd->add_option("--unit", in.unit, "Length unit of the mesh file (and of printed lengths): m, cm, mm, um")
+      ->capture_default_str();
+  cmd->add_option("--thickness", in.thickness, "Plate thickness for 2D meshes, m")->capture_default_str();
+  cmd->add_option("--density", in.density, "Density for the lumped masses, kg/m^3")->capture_default_str();
+  cmd->add_option("--plane", in.plane, "2D models: stress or strain")->capture_default_str();
+  add_surface_options(cmd, in.surface);
+}
+
+calibrate::CalibratedModel load_model(const ModelSource& in) {
+  io::ReadOptions ro;
+  ro.metres_per_unit = metres_per_unit(in.unit);
+  if (!in.model_path.empty()) {
+    if (!std::isnan(in.young) || !std::isnan(in.poisson))
+      throw InvalidArgument("--model carries its material: drop --young and --poisson");
+    calibrate::CalibratedModel model = calibrate::read_model(in.model_path);
+    if (!in.mesh_path.empty()) calibrate::require_same_nodes(model, io::read_mesh(in.mesh_path, ro));
+    return model;
+  }
+  if (in.mesh_path.empty()) throw InvalidArgument("give a mesh file (or --model MODEL.json)");
+  if (std::isnan(in.young) || std::isnan(in.poisson))
+    throw InvalidArgument("--young and --poisson are required (or --model MODEL.json)");
+  // The law is the FEM model's (--method fem); every calibration starts from the linear material.
+  material::Material mat{in.method == "fem" ? material::law_from_name(in.law) : material::Law::kLinear, in.young,
+                         in.poisson, in.plane == "strain" ? material::Plane::kStrain : material::Plane::kStress,
+                         in.thickness};
+  if (in.plane != "stress" && in.plane != "strain") throw InvalidArgument("--plane must be stress or strain");
+  calibrate::ModelOptions mo;
+  mo.method = in.method;
+  mo.density = in.density;
+  if (in.method == "surface") mo.surface = surface_options(in.surface);
+  return calibrate::calibrate_model(io::read_mesh(in.mesh_path, ro), mat, mo);
 }
 
 }  // namespace hooke::cli

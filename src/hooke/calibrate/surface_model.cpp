@@ -27,7 +27,7 @@ namespace {
 
 // Membrane springs on the surface edges, Lloyd et al. 2007 Eq. 9: k_ij = sum over the (two) triangles t of
 // the edge of E t A_t / l_ij^2 (Eq. 8's sqrt(3)/4 E t scaled by A_t / A_0, A_0 = sqrt(3)/4 l^2).
-std::unique_ptr<springs::SpringBlock> membrane(const mesh::Mesh& m, double youngs_modulus, double thickness) {
+SpringModel membrane(const mesh::Mesh& m, double youngs_modulus, double thickness) {
   std::map<std::array<int, 2>, double> k;
   for (int t = 0; t < m.element_count(); ++t) {
     const Vec3 a = m.nodes.row(m.elements(t, 0)).transpose(), b = m.nodes.row(m.elements(t, 1)).transpose(),
@@ -48,7 +48,11 @@ std::unique_ptr<springs::SpringBlock> membrane(const mesh::Mesh& m, double young
     rest(s) = (m.nodes.row(pair[0]) - m.nodes.row(pair[1])).norm();
     ++s;
   }
-  return std::make_unique<springs::SpringBlock>(3, std::move(pairs), std::move(stiffness), std::move(rest));
+  SpringModel out;
+  out.pairs = std::move(pairs);
+  out.stiffness = std::move(stiffness);
+  out.rest_length = std::move(rest);
+  return out;
 }
 
 }  // namespace
@@ -97,7 +101,13 @@ SurfaceModel make_surface_model(mesh::Mesh mesh, const material::Material& mater
       o.membrane_thickness >= 0.0 ? o.membrane_thickness : kDefaultThicknessRatio * d.normal_length.mean();
   VecX rest = Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size());
   out.model = std::make_shared<model::Model>(3, rest);
-  if (out.membrane_thickness > 0.0) out.model->add(membrane(mesh, e, out.membrane_thickness));
+  if (out.membrane_thickness > 0.0) {
+    out.membrane = membrane(mesh, e, out.membrane_thickness);
+    out.model->add(std::make_unique<springs::SpringBlock>(3, out.membrane.pairs, out.membrane.stiffness,
+                                                          out.membrane.rest_length));
+  }
+  out.law = law;
+  out.bulk_modulus = bulk;
   auto anchors = std::make_unique<surface::AnchorBlock>(rest, d.normals, out.k_normal, out.k_shear, law);
   out.anchors = anchors.get();
   out.model->add(std::move(anchors));

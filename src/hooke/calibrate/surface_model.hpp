@@ -3,6 +3,7 @@
 /// soft solid from its closed surface mesh alone. Membrane springs on the edges (Lloyd et al. 2007, Eq. 9),
 /// a zero-length anchor at every node (Eq. 2) and the volume penalty (Eq. 3, 4), with masses and stiffnesses
 /// from the radial discretisation (Fig. 5, 6).
+#include <hooke/calibrate/spring_model.hpp>
 #include <hooke/material/material.hpp>
 #include <hooke/mesh/mesh.hpp>
 #include <hooke/model/model.hpp>
@@ -55,9 +56,12 @@ struct SurfaceModel {
   mesh::Mesh mesh;                    ///< the checked, outward-oriented surface
   surface::SurfaceCheckReport check;  ///< what check_closed_surface fixed
   surface::Discretisation discretisation;
-  VecX masses;                      ///< per DOF (3 per node), kg, summing to 3 M
-  VecX k_normal, k_shear, k_bulk;   ///< K_E,i, K_G,i, K_B,i as used, N/m
-  double membrane_thickness = 0.0;  ///< t used, m
+  VecX masses;                                          ///< per DOF (3 per node), kg, summing to 3 M
+  VecX k_normal, k_shear, k_bulk;                       ///< K_E,i, K_G,i, K_B,i as used, N/m
+  double membrane_thickness = 0.0;                      ///< t used, m
+  SpringModel membrane;                                 ///< the membrane springs (empty when t = 0)
+  surface::AnchorLaw law = surface::AnchorLaw::kBlend;  ///< the anchor law used
+  double bulk_modulus = 0.0;                            ///< K = E / (3 (1 - 2 nu)), Pa
   const surface::AnchorBlock* anchors = nullptr;
   const surface::VolumePenaltyBlock* volume = nullptr;  ///< null without volume penalty
 };

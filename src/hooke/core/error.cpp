@@ -13,4 +13,9 @@ ParseError ParseError::at_byte(std::string file, std::int64_t byte_offset, const
   return ParseError(std::move(file), 0, byte_offset, message);
 }
 
+ParseError ParseError::at_entry(std::string file, const std::string& entry, const std::string& what_failed) {
+  std::string message = file + ": " + entry + ": " + what_failed;
+  return ParseError(std::move(file), 0, -1, message);
+}
+
 }  // namespace hooke

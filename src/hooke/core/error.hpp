@@ -20,6 +20,8 @@ class ParseError : public Error {
   ParseError(std::string file, std::int64_t line, const std::string& what_failed);
   /// Binary-format variant: names a byte offset instead of a line.
   static ParseError at_byte(std::string file, std::int64_t byte_offset, const std::string& what_failed);
+  /// Structured-format variant (JSON model files): names an entry ("springs[12]") instead of a line.
+  static ParseError at_entry(std::string file, const std::string& entry, const std::string& what_failed);
   const std::string& file() const { return m_file; }
   std::int64_t line() const { return m_line; }
   std::int64_t byte_offset() const { return m_byte_offset; }

@@ -1,3 +1,5 @@
+#include <cmath>
+#include <hooke/calibrate/model_factory.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/compare.hpp>
 #include <hooke/fem/elastic_block.hpp>
@@ -28,13 +30,16 @@ solve::StaticResult solve_springs(const mesh::Mesh& mesh, const calibrate::Sprin
   return solve::static_equilibrium(problem);
 }
 
-void measure(Comparison& c, int d) {
+// Node errors of c.spring_positions against c.fem_positions; `rest` are the spring model's rest positions.
+void measure(Comparison& c, const VecX& rest, int d) {
   const Eigen::Index n = c.spring_positions.size() / d;
   c.node_error.resize(n);
   for (Eigen::Index i = 0; i < n; ++i)
     c.node_error(i) = (c.spring_positions.segment(d * i, d) - c.fem_positions.segment(d * i, d)).norm();
   c.max_error = c.node_error.maxCoeff();
   c.mean_error = c.node_error.mean();
+  const double reference = (c.fem_positions - rest).norm();
+  c.relative_l2 = reference > 0.0 ? (c.spring_positions - c.fem_positions).norm() / reference : 0.0;
 }
 
 double traction_of(const mesh::Mesh& mesh, const std::vector<material::Material>& materials, const CompareOptions& o) {
@@ -50,12 +55,13 @@ Comparison compare_model(const mesh::Mesh& mesh, const std::vector<material::Mat
   const solve::StaticResult fem = solve_fem(mesh, materials, options.reference, c.load);
   const solve::StaticResult msm = solve_springs(mesh, springs, c.load);
   c.springs = springs;
+  c.fem_mesh = mesh;
   c.fem_positions = fem.positions;
   c.fem_mesh_positions = fem.positions;
   c.spring_positions = msm.positions;
   c.fem_report = fem.report;
   c.spring_report = msm.report;
-  measure(c, mesh.dim());
+  measure(c, rest_of(mesh), mesh.dim());
   return c;
 }
 
@@ -75,25 +81,44 @@ Comparison compare_across(const mesh::Mesh& coarse, const mesh::Mesh& fine, cons
   const solve::StaticResult msm = solve_springs(coarse, c.springs, c.load);
   const int d = coarse.dim();
   c.fem_mesh_positions = fem.positions;
+  c.fem_mesh = fine;
   const RowMatX at_coarse = mesh::interpolate_nodal(fine, mesh::positions_as_rows(fem.positions, d), coarse.nodes);
   c.fem_positions = Eigen::Map<const VecX>(at_coarse.data(), at_coarse.size());
   c.spring_positions = msm.positions;
   c.fem_report = fem.report;
   c.spring_report = msm.report;
-  measure(c, d);
+  measure(c, rest_of(coarse), d);
   return c;
 }
 
-Comparison compare_surface(const mesh::Mesh& surface, const material::Material& material,
-                           const calibrate::SurfaceOptions& surface_options, const CompareOptions& options,
-                           int layers) {
-  const calibrate::SurfaceModel s = calibrate::make_surface_model(surface, material, surface_options);
-  const mesh::Mesh tets = mesh::tetrahedralise_radially(s.mesh, s.discretisation.centre, layers);
-  const int n = s.mesh.node_count(), offset = 1 + (layers - 1) * n;  // tet node of surface node i: offset + i
+Comparison compare_calibrated(const calibrate::CalibratedModel& model, const CompareOptions& options, int layers) {
+  const calibrate::BuiltModel built = calibrate::build_model(model);
+  const VecX rest = built.model->rest_positions();
   Comparison c;
-  const LoadCase fine = make_load_case(tets, options.load, traction_of(tets, {material}, options));
-  const solve::StaticResult fem = solve_fem(tets, {material}, options.reference, fine);
-  model::Problem problem = model::make_problem(s.model);
+  c.springs = model.springs;
+  if (!model.surface) {
+    if (model.method == "fem") throw InvalidArgument("compare: the model is the FEM model itself");
+    c.load = make_load_case(model.mesh, options.load, traction_of(model.mesh, {model.material}, options),
+                            model.material.thickness);
+    const solve::StaticResult fem = solve_fem(model.mesh, {model.material}, options.reference, c.load);
+    model::Problem problem = model::make_problem(built.model);
+    apply(c.load, problem);
+    const solve::StaticResult msm = solve::static_equilibrium(problem);
+    c.fem_positions = c.fem_mesh_positions = fem.positions;
+    c.fem_mesh = model.mesh;
+    c.spring_positions = msm.positions;
+    c.fem_report = fem.report;
+    c.spring_report = msm.report;
+    measure(c, rest, model.mesh.dim());
+    return c;
+  }
+  // Arnab & Raja's surface model against the FEM of the volume it encloses, tetrahedralised radially.
+  const mesh::Mesh& surface = model.mesh;
+  const mesh::Mesh tets = mesh::tetrahedralise_radially(surface, model.surface->centre, layers);
+  const int n = surface.node_count(), offset = 1 + (layers - 1) * n;  // tet node of surface node i: offset + i
+  const LoadCase fine = make_load_case(tets, options.load, traction_of(tets, {model.material}, options));
+  const solve::StaticResult fem = solve_fem(tets, {model.material}, options.reference, fine);
+  model::Problem problem = model::make_problem(built.model);
   problem.external_force = fine.nodal_forces.segment(3 * offset, 3 * n);
   c.load = fine;
   c.load.fixed_nodes.clear();
@@ -106,22 +131,48 @@ Comparison compare_surface(const mesh::Mesh& surface, const material::Material& 
     if (i >= offset) c.load.top_nodes.push_back(i - offset);
   c.load.nodal_forces = problem.external_force;
   model::fix_nodes(problem, c.load.fixed_nodes);
-  if (s.volume && c.load.top_nodes.size() > 0) {
+  if (built.volume_penalty && c.load.top_nodes.size() > 0) {
     // The interaction of Eq. 4 at the centre of the loaded face, along the load.
     Vec3 centre = Vec3::Zero();
-    for (int i : c.load.top_nodes) centre += s.mesh.nodes.row(i).transpose() / c.load.top_nodes.size();
-    s.volume->set_interaction({centre, Vec3(c.load.direction), mesh::bounding_box_diagonal(s.mesh)});
+    for (int i : c.load.top_nodes) centre += surface.nodes.row(i).transpose() / c.load.top_nodes.size();
+    built.volume_penalty->set_interaction({centre, Vec3(c.load.direction), mesh::bounding_box_diagonal(surface)});
   }
   solve::NewtonOptions newton;
   newton.max_iterations = 100;
   const solve::StaticResult msm = solve::static_equilibrium(problem, newton);
   c.fem_mesh_positions = fem.positions;
+  c.fem_mesh = tets;
   c.fem_positions = fem.positions.segment(3 * offset, 3 * n);
   c.spring_positions = msm.positions;
   c.fem_report = fem.report;
   c.spring_report = msm.report;
-  measure(c, 3);
+  measure(c, rest, 3);
   return c;
+}
+
+Comparison compare_surface(const mesh::Mesh& surface, const material::Material& material,
+                           const calibrate::SurfaceOptions& surface_options, const CompareOptions& options,
+                           int layers) {
+  calibrate::ModelOptions mo;
+  mo.method = "surface";
+  mo.density = surface_options.density;
+  mo.surface = surface_options;
+  return compare_calibrated(calibrate::calibrate_model(surface, material, mo), options, layers);
+}
+
+std::vector<calibrate::CertificateCase> certify(const calibrate::CalibratedModel& model, double strain, int layers) {
+  if (!(strain > 0.0) || !std::isfinite(strain)) throw InvalidArgument("certify: the strain must be > 0");
+  std::vector<calibrate::CertificateCase> out;
+  for (LoadKind kind : {LoadKind::kStretch, LoadKind::kCompress, LoadKind::kShear}) {
+    CompareOptions o;
+    o.load = kind;
+    o.strain = strain;
+    const Comparison c = compare_calibrated(model, o, layers);
+    solve::require_converged(c.fem_report);
+    solve::require_converged(c.spring_report);
+    out.push_back({std::string(load_kind_name(kind)), strain, c.max_error, c.mean_error, c.relative_l2});
+  }
+  return out;
 }
 
 }  // namespace hooke::experiments

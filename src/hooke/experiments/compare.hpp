@@ -1,5 +1,6 @@
 #pragma once
 /// A spring model against the FEM reference on one load case (Lloyd et al. 2007, Sec. 5).
+#include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/calibrate/method.hpp>
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/experiments/load_case.hpp>
@@ -16,13 +17,15 @@ struct CompareOptions {
 };
 
 struct Comparison {
-  LoadCase load;            ///< the boundary conditions the spring model saw
-  VecX fem_positions;       ///< FEM equilibrium at the spring model's nodes, flat, m
-  VecX fem_mesh_positions;  ///< FEM equilibrium on the reference mesh's own nodes, flat, m
-  VecX spring_positions;    ///< spring-model equilibrium, flat, m
-  VecX node_error;          ///< |x_spring - x_fem| per node, m
-  double max_error = 0.0;   ///< m
-  double mean_error = 0.0;  ///< m
+  LoadCase load;             ///< the boundary conditions the spring model saw
+  VecX fem_positions;        ///< FEM equilibrium at the spring model's nodes, flat, m
+  VecX fem_mesh_positions;   ///< FEM equilibrium on the reference mesh's own nodes, flat, m
+  mesh::Mesh fem_mesh;       ///< the reference mesh (the model's own, a finer one, or the surface's tets)
+  VecX spring_positions;     ///< spring-model equilibrium, flat, m
+  VecX node_error;           ///< |x_spring - x_fem| per node, m
+  double max_error = 0.0;    ///< m
+  double mean_error = 0.0;   ///< m
+  double relative_l2 = 0.0;  ///< ||x_spring - x_fem|| / ||x_fem - X|| over all (compared) nodes
   solve::SolveReport fem_report, spring_report;
   calibrate::SpringModel springs;
 };
@@ -55,5 +58,17 @@ Comparison compare_across(const mesh::Mesh& coarse, const mesh::Mesh& fine, cons
 Comparison compare_surface(const mesh::Mesh& surface, const material::Material& material,
                            const calibrate::SurfaceOptions& surface_options, const CompareOptions& options,
                            int layers = 4);
+
+/// Any calibrated model (springs, volume terms, a surface model, or one read from a file) against the FEM of
+/// its own mesh and material (model.material with the law options.reference) on one load case. A surface model
+/// is compared as compare_surface does, on `layers` radial layers around model.surface->centre.
+/// @throws InvalidArgument for the "fem" model (nothing to compare) or a model validate_model rejects
+Comparison compare_calibrated(const calibrate::CalibratedModel& model, const CompareOptions& options, int layers = 4);
+
+/// The certificate a model is shipped with (`hooke calibrate --certify`): stretch, compress and shear at mean
+/// linear-FEM strain `strain` against the linear FEM, each case's max / mean node error (m) and relative L2.
+/// @throws SolverFailure when a solve does not converge; InvalidArgument for strain <= 0
+std::vector<calibrate::CertificateCase> certify(const calibrate::CalibratedModel& model, double strain = 0.01,
+                                                int layers = 4);
 
 }  // namespace hooke::experiments

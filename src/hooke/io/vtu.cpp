@@ -53,38 +53,66 @@ std::map<std::string, std::string> attributes(const std::string& tag) {
 
 }  // namespace
 
+namespace {
+
+// One piece of `cells` (#C x nodes per cell, all of VTK type `cell_type`) on `nodes` (#V x dim), with the cell
+// fields after `region` (when given).
+void write_grid(std::ostream& out, const RowMatX& nodes, const RowMatXi& cells, int cell_type,
+                const std::vector<Field>& point_data, const std::vector<Field>& cell_data, const Field* region) {
+  const auto nv = nodes.rows(), ne = cells.rows(), npc = cells.cols();
+  const int dim = static_cast<int>(nodes.cols());
+  out << std::setprecision(17);
+  out << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+      << "  <UnstructuredGrid>\n"
+      << "    <Piece NumberOfPoints=\"" << nv << "\" NumberOfCells=\"" << ne << "\">\n"
+      << "      <PointData>\n";
+  for (const Field& f : point_data) write_field(out, f, nv, dim);
+  out << "      </PointData>\n      <CellData>\n";
+  if (region) write_field(out, *region, ne, dim);
+  for (const Field& f : cell_data) write_field(out, f, ne, dim);
+  out << "      </CellData>\n      <Points>\n"
+      << "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (Eigen::Index i = 0; i < nv; ++i)
+    out << "          " << nodes(i, 0) << ' ' << nodes(i, 1) << ' ' << (dim == 3 ? nodes(i, 2) : 0.0) << '\n';
+  out << "        </DataArray>\n      </Points>\n      <Cells>\n"
+      << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (Eigen::Index e = 0; e < ne; ++e) {
+    out << "         ";
+    for (Eigen::Index k = 0; k < npc; ++k) out << ' ' << cells(e, k);
+    out << '\n';
+  }
+  out << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for (Eigen::Index e = 0; e < ne; ++e) out << "          " << npc * (e + 1) << '\n';
+  out << "        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for (Eigen::Index e = 0; e < ne; ++e) out << "          " << cell_type << '\n';
+  out << "        </DataArray>\n      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+}
+
+}  // namespace
+
 void write_vtu(const std::filesystem::path& path, const mesh::Mesh& m, const std::vector<Field>& point_data,
                const std::vector<Field>& cell_data) {
+  const int ne = m.element_count();
+  const Field region{"region", 1, m.region.size() == ne ? m.region.cast<double>().eval() : VecX::Zero(ne)};
   write_file_atomically(path, [&](std::ostream& out) {
-    const int nv = m.node_count(), ne = m.element_count(), npe = mesh::nodes_per_element(m.kind);
-    out << std::setprecision(17);
-    out << "<?xml version=\"1.0\"?>\n"
-        << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-        << "  <UnstructuredGrid>\n"
-        << "    <Piece NumberOfPoints=\"" << nv << "\" NumberOfCells=\"" << ne << "\">\n"
-        << "      <PointData>\n";
-    for (const Field& f : point_data) write_field(out, f, nv, m.dim());
-    out << "      </PointData>\n      <CellData>\n";
-    Field region{"region", 1, m.region.size() == ne ? m.region.cast<double>().eval() : VecX::Zero(ne)};
-    write_field(out, region, ne, m.dim());
-    for (const Field& f : cell_data) write_field(out, f, ne, m.dim());
-    out << "      </CellData>\n      <Points>\n"
-        << "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (int i = 0; i < nv; ++i)
-      out << "          " << m.nodes(i, 0) << ' ' << m.nodes(i, 1) << ' ' << (m.dim() == 3 ? m.nodes(i, 2) : 0.0)
-          << '\n';
-    out << "        </DataArray>\n      </Points>\n      <Cells>\n"
-        << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (int e = 0; e < ne; ++e) {
-      out << "         ";
-      for (int k = 0; k < npe; ++k) out << ' ' << m.elements(e, k);
-      out << '\n';
-    }
-    out << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-    for (int e = 0; e < ne; ++e) out << "          " << npe * (e + 1) << '\n';
-    out << "        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (int e = 0; e < ne; ++e) out << "          " << vtk_cell_type(m.kind) << '\n';
-    out << "        </DataArray>\n      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+    write_grid(out, m.nodes, m.elements, vtk_cell_type(m.kind), point_data, cell_data, &region);
+  });
+}
+
+void write_vtu_lines(const std::filesystem::path& path, const RowMatX& nodes,
+                     const std::vector<std::array<int, 2>>& lines, const std::vector<Field>& point_data,
+                     const std::vector<Field>& cell_data) {
+  RowMatXi cells(static_cast<Eigen::Index>(lines.size()), 2);
+  for (size_t k = 0; k < lines.size(); ++k) {
+    for (int a = 0; a < 2; ++a)
+      if (lines[k][static_cast<size_t>(a)] < 0 || lines[k][static_cast<size_t>(a)] >= nodes.rows())
+        throw InvalidArgument("line " + std::to_string(k) + " names a node out of range");
+    cells(static_cast<Eigen::Index>(k), 0) = lines[k][0];
+    cells(static_cast<Eigen::Index>(k), 1) = lines[k][1];
+  }
+  write_file_atomically(path, [&](std::ostream& out) {
+    write_grid(out, nodes, cells, 3, point_data, cell_data, nullptr);  // VTK_LINE = 3
   });
 }
 

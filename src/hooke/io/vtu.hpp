@@ -1,5 +1,6 @@
 #pragma once
 /// VTK XML unstructured grids (.vtu): written with point and cell data, read back (ASCII data arrays).
+#include <array>
 #include <filesystem>
 #include <hooke/io/field.hpp>
 #include <hooke/mesh/mesh.hpp>
@@ -13,6 +14,13 @@ namespace hooke::io {
 /// @throws InvalidArgument if a field's size does not match #V or #E times its components
 void write_vtu(const std::filesystem::path& path, const mesh::Mesh& mesh, const std::vector<Field>& point_data = {},
                const std::vector<Field>& cell_data = {});
+
+/// Writes line cells (VTK type 3) between `nodes` (#V x 2 or 3, m) as ASCII VTU, atomically: springs coloured
+/// by a cell field in ParaView. Fields as in write_vtu (no "region").
+/// @throws InvalidArgument on a node index out of range or a field of the wrong size
+void write_vtu_lines(const std::filesystem::path& path, const RowMatX& nodes,
+                     const std::vector<std::array<int, 2>>& lines, const std::vector<Field>& point_data = {},
+                     const std::vector<Field>& cell_data = {});
 
 /// Contents of a VTU file.
 struct VtuContents {

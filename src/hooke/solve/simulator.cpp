@@ -630,8 +630,13 @@ Simulator::Simulator(model::Problem problem, Dynamics dynamics, SimulatorOptions
       throw InvalidArgument("Simulator: free DOF " + std::to_string(i) + " has no mass");
   if (m->dyn.gravity.size() != 0 && m->dyn.gravity.size() != m->model().dim())
     throw InvalidArgument("Simulator: gravity needs one component per axis");
-  if (m->dyn.mass_damping < 0.0 || m->dyn.stiffness_damping < 0.0)
-    throw InvalidArgument("Simulator: Rayleigh damping coefficients must be >= 0");
+  if (!(m->dyn.mass_damping >= 0.0) || !(m->dyn.stiffness_damping >= 0.0) || !std::isfinite(m->dyn.mass_damping) ||
+      !std::isfinite(m->dyn.stiffness_damping))
+    throw InvalidArgument("Simulator: Rayleigh damping coefficients must be finite and >= 0");
+  if (options.local_global_iterations < 1)
+    throw InvalidArgument("Simulator: local-global needs at least 1 iteration per step");
+  if (options.max_newton_iterations < 1 || !(options.newton_tolerance > 0.0))
+    throw InvalidArgument("Simulator: Newton needs at least 1 iteration and a tolerance > 0");
   if (m->dyn.stiffness_damping > 0.0) m->rest_stiffness();
   if (options.integrator == Integrator::kLocalGlobal) m->setup_local_global();
   m->base_fixed = m->problem.fixed_dofs;

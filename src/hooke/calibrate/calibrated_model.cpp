@@ -1,0 +1,155 @@
+#include <cmath>
+#include <hooke/calibrate/calibrated_model.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/mesh/reorder.hpp>
+#include <string>
+
+namespace hooke::calibrate {
+namespace {
+
+std::string entry(const std::string& what, Eigen::Index i) { return what + "[" + std::to_string(i) + "]"; }
+
+struct Checker {
+  const std::string& source;
+  [[noreturn]] void fail(const std::string& where, const std::string& why) const {
+    throw InvalidArgument(source + ": " + where + ": " + why);
+  }
+  void node(const std::string& where, int index, int nodes) const {
+    if (index < 0 || index >= nodes)
+      fail(where, "node index " + std::to_string(index) + " is out of range (the model has " + std::to_string(nodes) +
+                      " nodes, numbered from 0)");
+  }
+  void finite(const std::string& where, double v, const char* what) const {
+    if (!std::isfinite(v)) fail(where, std::string(what) + " is not a finite number");
+  }
+  void positive(const std::string& where, double v, const char* what) const {
+    finite(where, v, what);
+    if (!(v > 0.0)) fail(where, std::string(what) + " " + std::to_string(v) + " must be > 0");
+  }
+  void non_negative(const std::string& where, double v, const char* what) const {
+    finite(where, v, what);
+    if (v < 0.0) fail(where, std::string(what) + " " + std::to_string(v) + " must be >= 0");
+  }
+  void per_node(const char* what, Eigen::Index size, int nodes) const {
+    if (size != nodes)
+      fail(what, "has " + std::to_string(size) + " entries, the model has " + std::to_string(nodes) + " nodes");
+  }
+};
+
+void validate_surface(const SurfaceTerms& s, const Checker& c, int n) {
+  c.per_node("surface.anchors", s.k_normal.size(), n);
+  if (s.k_shear.size() != n || s.normals.rows() != n || s.normals.cols() != 3)
+    c.fail("surface.anchors", "needs K_E, K_G and a normal for each node");
+  for (int i = 0; i < n; ++i) {
+    const std::string where = entry("surface.anchors", i);
+    c.non_negative(where, s.k_normal(i), "K_E");
+    c.non_negative(where, s.k_shear(i), "K_G");
+    if (!s.normals.row(i).allFinite() || std::abs(s.normals.row(i).norm() - 1.0) > 1e-6)
+      c.fail(where, "the normal must be a finite unit vector");
+  }
+  for (int a = 0; a < 3; ++a) c.finite("surface.centre", s.centre(a), "the centre");
+  if (!s.volume_penalty) return;
+  c.positive("surface.volume_penalty.rest_volume", s.rest_volume, "V0");
+  c.positive("surface.volume_penalty.bulk_modulus", s.bulk_modulus, "K");
+  c.per_node("surface.volume_penalty.nodes", s.k_bulk.size(), n);
+  c.per_node("surface.volume_penalty.nodes", s.normal_length.size(), n);
+  for (int i = 0; i < n; ++i) {
+    const std::string where = entry("surface.volume_penalty.nodes", i);
+    c.non_negative(where, s.k_bulk(i), "K_B");
+    c.positive(where, s.normal_length(i), "L'");
+  }
+}
+
+}  // namespace
+
+void validate_model(const CalibratedModel& m, const std::string& source) {
+  const Checker c{source};
+  const int n = m.mesh.node_count(), d = m.mesh.dim(), npe = mesh::nodes_per_element(m.mesh.kind);
+  if (n == 0) c.fail("nodes", "the model has no nodes");
+  if (m.mesh.nodes.cols() != d) c.fail("nodes", "need " + std::to_string(d) + " coordinates each");
+  for (int i = 0; i < n; ++i)
+    if (!m.mesh.nodes.row(i).allFinite()) c.fail(entry("nodes", i), "a coordinate is not a finite number");
+  if (m.mesh.elements.cols() != npe && m.mesh.element_count() > 0)
+    c.fail("elements", "need " + std::to_string(npe) + " nodes each");
+  for (int e = 0; e < m.mesh.element_count(); ++e)
+    for (int k = 0; k < npe; ++k) c.node(entry("elements", e), m.mesh.elements(e, k), n);
+  if (m.masses.size() != static_cast<Eigen::Index>(d) * n)
+    c.fail("masses", "has " + std::to_string(m.masses.size() / std::max(d, 1)) + " entries, the model has " +
+                         std::to_string(n) + " nodes");
+  for (int i = 0; i < n; ++i) c.positive(entry("masses", i), m.masses(d * i), "mass");
+  const SpringModel& s = m.springs;
+  if (s.stiffness.size() != static_cast<Eigen::Index>(s.pairs.size()) ||
+      s.rest_length.size() != static_cast<Eigen::Index>(s.pairs.size()))
+    c.fail("springs", "need a stiffness and a rest length each");
+  for (size_t k = 0; k < s.pairs.size(); ++k) {
+    const std::string where = entry("springs", static_cast<Eigen::Index>(k));
+    c.node(where, s.pairs[k][0], n);
+    c.node(where, s.pairs[k][1], n);
+    if (s.pairs[k][0] == s.pairs[k][1]) c.fail(where, "a spring needs two different nodes");
+    c.non_negative(where, s.stiffness(static_cast<Eigen::Index>(k)), "stiffness k");
+    c.positive(where, s.rest_length(static_cast<Eigen::Index>(k)), "rest length l0");
+  }
+  if (s.volume_tets.rows() > 0) {
+    if (d != 3 || s.volume_tets.cols() != 4) c.fail("volume_terms", "volume terms need tets of a 3D model");
+    if (s.volume_stiffness.size() != s.volume_tets.rows() || s.rest_volume.size() != s.volume_tets.rows())
+      c.fail("volume_terms", "need k_V and V0 for each tet");
+    for (Eigen::Index t = 0; t < s.volume_tets.rows(); ++t) {
+      const std::string where = entry("volume_terms", t);
+      for (int k = 0; k < 4; ++k) c.node(where, s.volume_tets(t, k), n);
+      c.finite(where, s.volume_stiffness(t), "k_V");
+      c.positive(where, s.rest_volume(t), "V0");
+    }
+  }
+  if (m.surface) {
+    if (m.mesh.kind != mesh::ElementKind::kSurfaceTriangle) c.fail("surface", "needs a surface-triangle mesh");
+    validate_surface(*m.surface, c, n);
+  }
+  if (m.method != "fem" && s.pairs.empty() && s.volume_tets.rows() == 0 && !m.surface)
+    c.fail("springs", "the model has no springs, volume terms or surface terms");
+}
+
+void require_same_nodes(const CalibratedModel& model, const mesh::Mesh& mesh) {
+  const std::string names = "the model '" + model.mesh.source + "' and the mesh '" + mesh.source + "'";
+  if (model.mesh.node_count() != mesh.node_count() || model.mesh.dim() != mesh.dim())
+    throw InvalidArgument(names + " do not match: " + std::to_string(model.mesh.node_count()) + " nodes in " +
+                          std::to_string(model.mesh.dim()) + "D against " + std::to_string(mesh.node_count()) +
+                          " nodes in " + std::to_string(mesh.dim()) + "D");
+  const double size = (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();
+  for (int i = 0; i < mesh.node_count(); ++i)
+    if ((model.mesh.nodes.row(i) - mesh.nodes.row(i)).norm() > 1e-9 * size)
+      throw InvalidArgument(names + " do not match: node " + std::to_string(i) + " is at a different place");
+}
+
+CalibratedModel permute_nodes(const CalibratedModel& model, const std::vector<int>& new_to_old) {
+  CalibratedModel out = model;
+  out.mesh = mesh::permute_nodes(model.mesh, new_to_old);  // checks the permutation
+  const int d = model.mesh.dim(), n = model.mesh.node_count();
+  std::vector<int> old_to_new(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k) old_to_new[static_cast<size_t>(new_to_old[static_cast<size_t>(k)])] = k;
+  for (int k = 0; k < n; ++k)
+    out.masses.segment(d * k, d) = model.masses.segment(d * new_to_old[static_cast<size_t>(k)], d);
+  for (auto& p : out.springs.pairs) {
+    p = {old_to_new[static_cast<size_t>(p[0])], old_to_new[static_cast<size_t>(p[1])]};
+    if (p[0] > p[1]) std::swap(p[0], p[1]);
+  }
+  for (Eigen::Index t = 0; t < out.springs.volume_tets.rows(); ++t)
+    for (int k = 0; k < 4; ++k)
+      out.springs.volume_tets(t, k) = old_to_new[static_cast<size_t>(out.springs.volume_tets(t, k))];
+  if (out.surface) {
+    SurfaceTerms& s = *out.surface;
+    const SurfaceTerms& o = *model.surface;
+    for (int k = 0; k < n; ++k) {
+      const int i = new_to_old[static_cast<size_t>(k)];
+      s.normals.row(k) = o.normals.row(i);
+      s.k_normal(k) = o.k_normal(i);
+      s.k_shear(k) = o.k_shear(i);
+      if (s.volume_penalty) {
+        s.k_bulk(k) = o.k_bulk(i);
+        s.normal_length(k) = o.normal_length(i);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace hooke::calibrate

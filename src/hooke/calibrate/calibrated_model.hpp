@@ -1,0 +1,71 @@
+#pragma once
+/// A calibrated model as plain data: what `hooke calibrate` writes and `--model` reads back (docs/model_format.md).
+/// It holds everything the term blocks are built from, so that a model made here, in another program or by hand
+/// runs in every solver and comparison (DESIGN.md: "the model is data").
+#include <hooke/calibrate/spring_model.hpp>
+#include <hooke/material/material.hpp>
+#include <hooke/mesh/mesh.hpp>
+#include <hooke/surface/anchor_block.hpp>
+#include <hooke/surface/volume_penalty_block.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hooke::calibrate {
+
+/// The inner terms of Arnab & Raja's surface model, per node of the (outward-oriented) surface mesh.
+struct SurfaceTerms {
+  std::string scheme = "D";    ///< distribution scheme "A".."D" (for reports)
+  Vec3 centre = Vec3::Zero();  ///< object centre c of the radial discretisation, m
+  surface::AnchorLaw anchor_law = surface::AnchorLaw::kBlend;
+  RowMatX normals;             ///< #V x 3 unit node normals N_i at rest
+  VecX k_normal;               ///< K_E,i per node, N/m (>= 0)
+  VecX k_shear;                ///< K_G,i per node, N/m (>= 0)
+  bool volume_penalty = true;  ///< Eq. 3 present
+  surface::VolumeForce volume_force = surface::VolumeForce::kNodal;
+  double rest_volume = 0.0;   ///< V_0 enclosed at rest, m^3 (> 0 with the penalty)
+  double bulk_modulus = 0.0;  ///< K = E / (3 (1 - 2 nu)), Pa
+  VecX k_bulk;                ///< K_B,i per node, N/m (>= 0)
+  VecX normal_length;         ///< L'_i per node, m (> 0)
+};
+
+/// The measured error of a model against the linear FEM on one load case (`hooke calibrate --certify`).
+struct CertificateCase {
+  std::string load;          ///< "stretch", "compress" or "shear"
+  double strain = 0.0;       ///< mean top strain of the linear FEM
+  double max_error = 0.0;    ///< max node distance |x_model - x_fem|, m
+  double mean_error = 0.0;   ///< mean node distance, m
+  double relative_l2 = 0.0;  ///< ||u_model - u_fem|| / ||u_fem|| over all nodes
+};
+
+/// A model ready to be built into term blocks (build_model) or written to a file (write_model).
+struct CalibratedModel {
+  std::string method;                   ///< stable name: a calibration method, "surface", "fem", or what a file says
+  std::string equation;                 ///< where its constants come from ("Lloyd et al. 2007, Eq. 12-13")
+  mesh::Mesh mesh;                      ///< rest nodes (m) and the elements the model stands for
+  material::Material material;          ///< E (Pa), nu, thickness (m, 2D); the law is used by "fem" only
+  double density = 1000.0;              ///< kg/m^3, what the masses were made from
+  VecX masses;                          ///< lumped mass per DOF, kg (dim x #V, > 0)
+  SpringModel springs;                  ///< springs and tet volume terms (empty for "fem")
+  std::optional<SurfaceTerms> surface;  ///< anchors and volume penalty of the surface model
+  std::vector<std::string> warnings;    ///< the method's validity warnings (calibrate::validity_warnings)
+  std::vector<CertificateCase> certificate;  ///< measured error against FEM, when certified
+};
+
+/// Checks that `model` is consistent: node and element indices in range, finite positions, k >= 0, l0 > 0,
+/// volume terms on tets with V0 > 0 and finite k_V (k_V may be negative: issue 15's any-nu models), masses > 0,
+/// surface arrays of one entry per node. Throws naming the entry as the model file does ("springs[12]").
+/// @param source  name used in messages (the file)
+/// @throws InvalidArgument naming `source` and the entry
+void validate_model(const CalibratedModel& model, const std::string& source);
+
+/// Checks that `model` stands on `mesh`: the same node count and rest positions (within 1e-9 of the bounding-box
+/// diagonal), so that a model file is run on the mesh it was made for.
+/// @throws InvalidArgument naming both and the first node that differs
+void require_same_nodes(const CalibratedModel& model, const mesh::Mesh& mesh);
+
+/// The same model with its nodes renumbered: new node k is old node new_to_old[k] (a permutation of #V).
+/// Spring i < j order is restored; spring order is kept.
+CalibratedModel permute_nodes(const CalibratedModel& model, const std::vector<int>& new_to_old);
+
+}  // namespace hooke::calibrate

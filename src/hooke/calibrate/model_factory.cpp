@@ -1,0 +1,135 @@
+#include <algorithm>
+#include <cmath>
+#include <hooke/calibrate/method.hpp>
+#include <hooke/calibrate/model_factory.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/fem/elastic_block.hpp>
+#include <hooke/model/mass.hpp>
+#include <hooke/model/orientation_guard.hpp>
+#include <hooke/springs/spring_block.hpp>
+#include <hooke/springs/tet_volume_block.hpp>
+
+namespace hooke::calibrate {
+namespace {
+
+constexpr std::string_view kCalibrationMethods[] = {"vangelder",     "lloyd-equilateral",   "lloyd-triangle",
+                                                    "lloyd-square",  "lloyd-tet",           "lloyd-tet-volume",
+                                                    "stiffness-fit", "stiffness-fit-volume"};
+
+CalibratedModel surface_model(const mesh::Mesh& mesh, const material::Material& material, const ModelOptions& o) {
+  SurfaceOptions so = o.surface;
+  so.density = o.density;
+  const SurfaceModel s = make_surface_model(mesh, material, so);
+  CalibratedModel out;
+  out.mesh = s.mesh;
+  out.masses = s.masses;
+  out.springs = s.membrane;
+  SurfaceTerms t;
+  t.scheme = std::string(surface_scheme_name(so.scheme));
+  t.centre = s.discretisation.centre;
+  t.anchor_law = s.law;
+  t.normals = s.discretisation.normals;
+  t.k_normal = s.k_normal;
+  t.k_shear = s.k_shear;
+  t.volume_penalty = s.volume != nullptr;
+  t.volume_force = so.volume_force;
+  t.rest_volume = s.discretisation.volume;
+  t.bulk_modulus = s.bulk_modulus;
+  if (t.volume_penalty) {
+    t.k_bulk = s.k_bulk;
+    t.normal_length = s.discretisation.normal_length;
+  }
+  out.surface = std::move(t);
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> model_method_names() {
+  std::vector<std::string> out(std::begin(kCalibrationMethods), std::end(kCalibrationMethods));
+  out.emplace_back("surface");
+  out.emplace_back("fem");
+  return out;
+}
+
+std::string method_equation(std::string_view method) {
+  if (method == "vangelder") return "van Gelder 1998: k = sum_e E t A_e / l^2 (tets: E V_e / l^2)";
+  if (method == "lloyd-equilateral") return "Lloyd et al. 2007, Eq. 8: k = sum_e sqrt(3)/4 E t";
+  if (method == "lloyd-triangle") return "Lloyd et al. 2007, Eq. 9: k = sum_e sqrt(3)/4 E t A_e / A_0";
+  if (method == "lloyd-square") return "Lloyd et al. 2007, Eq. 10-11: edge 5/16 E t, diagonal 7/16 E t, prestrained";
+  if (method == "lloyd-tet") return "Lloyd et al. 2007, Eq. 12 with the equivalent edge length of Eq. 13";
+  if (method == "lloyd-tet-volume") return "Lloyd et al. 2007, Eq. 14 with the equivalent edge length of Eq. 13";
+  if (method == "stiffness-fit")
+    return "Lloyd et al. 2007, Sec. 3.3 numerically: per element min ||K_FEM - K_MSM||_F, k >= 0";
+  if (method == "stiffness-fit-volume")
+    return "Lloyd et al. 2007, Sec. 3.3 numerically with a volume term per tet (App. C.2)";
+  if (method == "surface")
+    return "Arnab & Raja: anchors (Eq. 2), volume penalty (Eq. 3, 4), membrane springs of Lloyd et al. Eq. 9";
+  if (method == "fem") return "finite elements (CST, Q4, tet4) of the material's law";
+  method_from_name(method);  // throws, listing the names
+  return {};
+}
+
+CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material& material,
+                                const ModelOptions& options) {
+  const std::vector<std::string> names = model_method_names();
+  if (std::find(names.begin(), names.end(), options.method) == names.end()) {
+    std::string all;
+    for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+    throw InvalidArgument("unknown model method '" + options.method + "' (use " + all + ")");
+  }
+  material::validate(material);
+  if (!(options.density > 0.0) || !std::isfinite(options.density))
+    throw InvalidArgument("the density must be a positive number of kg/m^3");
+  CalibratedModel out;
+  if (options.method == "surface") {
+    out = surface_model(mesh, material, options);
+  } else {
+    out.mesh = mesh;
+    if (options.method != "fem") {
+      const Method method = method_from_name(options.method);
+      out.warnings = validity_warnings(mesh, {material}, method);
+      out.springs = calibrate(mesh, {material}, method);
+    } else if (mesh.kind == mesh::ElementKind::kSurfaceTriangle) {
+      throw InvalidArgument("the FEM model needs a triangle, quad or tet mesh, not a surface mesh");
+    }
+    out.masses = model::lumped_masses(mesh, options.density, material.thickness);
+  }
+  out.method = options.method;
+  out.equation = method_equation(options.method);
+  out.material = material;
+  out.density = options.density;
+  return out;
+}
+
+BuiltModel build_model(const CalibratedModel& m) {
+  validate_model(m, m.mesh.source.empty() ? std::string("the model") : m.mesh.source);
+  const int d = m.mesh.dim();
+  BuiltModel out;
+  out.model = std::make_shared<model::Model>(d, Eigen::Map<const VecX>(m.mesh.nodes.data(), m.mesh.nodes.size()));
+  if (m.method == "fem") {
+    out.model->add(fem::make_elastic_block(m.mesh, m.material));
+    return out;
+  }
+  const SpringModel& s = m.springs;
+  if (!s.pairs.empty()) out.model->add(std::make_unique<springs::SpringBlock>(d, s.pairs, s.stiffness, s.rest_length));
+  if (s.volume_tets.rows() > 0)
+    out.model->add(std::make_unique<springs::TetVolumeBlock>(s.volume_tets, s.volume_stiffness, s.rest_volume));
+  if (m.surface) {
+    const SurfaceTerms& t = *m.surface;
+    out.model->add(std::make_unique<surface::AnchorBlock>(out.model->rest_positions(), t.normals, t.k_normal, t.k_shear,
+                                                          t.anchor_law));
+    if (t.volume_penalty) {
+      auto volume = std::make_unique<surface::VolumePenaltyBlock>(m.mesh.elements, t.rest_volume, t.k_bulk,
+                                                                  t.normal_length, t.bulk_modulus, t.volume_force);
+      out.volume_penalty = volume.get();
+      out.model->add(std::move(volume));
+    }
+  } else if (m.mesh.kind != mesh::ElementKind::kSurfaceTriangle && m.mesh.element_count() > 0) {
+    // Springs alone admit a body turned inside out as an "equilibrium"; like the FEM, never accept one.
+    out.model->add(std::make_unique<model::OrientationGuard>(m.mesh));
+  }
+  return out;
+}
+
+}  // namespace hooke::calibrate

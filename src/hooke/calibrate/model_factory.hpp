@@ -1,0 +1,49 @@
+#pragma once
+/// The one model factory: every front end (CLI, Python, viewer) gets its model from here, by method name or
+/// from a model file, and never chooses term blocks itself (DESIGN.md).
+#include <hooke/calibrate/calibrated_model.hpp>
+#include <hooke/calibrate/surface_model.hpp>
+#include <hooke/model/model.hpp>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hooke::calibrate {
+
+struct ModelOptions {
+  /// A calibration method (method_from_name), "surface" (Arnab & Raja) or "fem" (the FEM model of
+  /// `material.law`), default "lloyd-tet".
+  std::string method = "lloyd-tet";
+  double density = 1000.0;  ///< kg/m^3 (> 0), for the lumped masses (and the surface model's object mass)
+  SurfaceOptions surface;   ///< "surface" only; its density is replaced by `density`
+};
+
+/// Every name ModelOptions::method accepts: the calibration methods, then "surface" and "fem".
+std::vector<std::string> model_method_names();
+
+/// Where the constants of `method` come from, one line ("Lloyd et al. 2007, Eq. 12 with l-hat of Eq. 13").
+/// @throws InvalidArgument for an unknown name
+std::string method_equation(std::string_view method);
+
+/// Calibrates the model named by options.method on `mesh` for `material` (linear E, nu; t for 2D; the law
+/// only matters for "fem"): springs, volume and surface terms, lumped masses, the validity warnings.
+/// @param mesh  validated mesh, m; a closed surface-triangle mesh for "surface"
+/// @throws InvalidArgument for an unknown method or one that does not apply to the mesh, InvalidMaterial,
+///   InvalidMesh (the surface model's checks)
+CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material& material,
+                                const ModelOptions& options);
+
+/// A model's term blocks, and what an interaction may drive.
+struct BuiltModel {
+  std::shared_ptr<model::Model> model;
+  /// The surface model's volume penalty (null otherwise): its Eq. 4 weights follow a probe.
+  const surface::VolumePenaltyBlock* volume_penalty = nullptr;
+};
+
+/// The term blocks of `model`: springs (and tet volume terms) with an orientation guard on the elements, the
+/// FEM block for "fem", membrane springs + anchors (+ volume penalty) for a surface model.
+/// @throws InvalidArgument when validate_model rejects it
+BuiltModel build_model(const CalibratedModel& model);
+
+}  // namespace hooke::calibrate

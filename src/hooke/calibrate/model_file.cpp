@@ -1,0 +1,434 @@
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <hooke/calibrate/model_file.hpp>
+#include <hooke/core/atomic_file.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/core/version.hpp>
+#include <hooke/io/vtu.hpp>
+#include <hooke/mesh/validate.hpp>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+namespace hooke::calibrate {
+namespace {
+
+using nlohmann::json;
+
+// ---- writing: one row (node, element, spring) a line, numbers as nlohmann prints them (shortest round trip)
+
+std::string num(double v) { return json(v).dump(); }
+std::string str(const std::string& s) { return json(s).dump(); }
+
+template <typename RowFn>
+void rows(std::ostream& out, const char* key, Eigen::Index count, RowFn&& row, bool last = false) {
+  out << "  \"" << key << "\": [";
+  for (Eigen::Index i = 0; i < count; ++i) out << (i ? ",\n    " : "\n    ") << row(i);
+  out << (count ? "\n  ]" : "]") << (last ? "\n" : ",\n");
+}
+
+std::string vec_row(const RowMatX& m, Eigen::Index i) {
+  std::string s = "[";
+  for (Eigen::Index c = 0; c < m.cols(); ++c) s += (c ? ", " : "") + num(m(i, c));
+  return s + "]";
+}
+
+std::string int_row(const RowMatXi& m, Eigen::Index i) {
+  std::string s = "[";
+  for (Eigen::Index c = 0; c < m.cols(); ++c) s += (c ? ", " : "") + std::to_string(m(i, c));
+  return s + "]";
+}
+
+std::string plane_name(material::Plane p) { return p == material::Plane::kStress ? "stress" : "strain"; }
+
+void write_surface(std::ostream& out, const SurfaceTerms& s) {
+  out << "  \"surface\": {\n    \"scheme\": " << str(s.scheme) << ",\n    \"centre\": [" << num(s.centre(0)) << ", "
+      << num(s.centre(1)) << ", " << num(s.centre(2))
+      << "],\n    \"anchor_law\": " << str(std::string(surface::anchor_law_name(s.anchor_law)))
+      << ",\n    \"anchors\": [";
+  for (Eigen::Index i = 0; i < s.k_normal.size(); ++i)
+    out << (i ? ",\n      [" : "\n      [") << num(s.k_normal(i)) << ", " << num(s.k_shear(i)) << ", "
+        << num(s.normals(i, 0)) << ", " << num(s.normals(i, 1)) << ", " << num(s.normals(i, 2)) << "]";
+  out << "\n    ],\n    \"volume_penalty\": ";
+  if (!s.volume_penalty) {
+    out << "null\n  },\n";
+    return;
+  }
+  out << "{\n      \"force\": " << str(std::string(surface::volume_force_name(s.volume_force)))
+      << ",\n      \"rest_volume\": " << num(s.rest_volume) << ",\n      \"bulk_modulus\": " << num(s.bulk_modulus)
+      << ",\n      \"nodes\": [";
+  for (Eigen::Index i = 0; i < s.k_bulk.size(); ++i)
+    out << (i ? ",\n        [" : "\n        [") << num(s.k_bulk(i)) << ", " << num(s.normal_length(i)) << "]";
+  out << "\n      ]\n    }\n  },\n";
+}
+
+// ---- reading: every access names the entry it failed on
+
+class Reader {
+ public:
+  explicit Reader(std::string source) : m_source(std::move(source)) {}
+  [[noreturn]] void fail(const std::string& entry, const std::string& why) const {
+    throw ParseError::at_entry(m_source, entry, why);
+  }
+  const json& key(const json& obj, const std::string& where, const char* name) const {
+    const auto it = obj.find(name);
+    if (it == obj.end()) fail(where.empty() ? name : where, std::string("missing key \"") + name + "\"");
+    return *it;
+  }
+  void only_keys(const json& obj, const std::string& where, std::initializer_list<const char*> allowed) const {
+    if (!obj.is_object()) fail(where, "must be an object");
+    std::set<std::string> ok(allowed.begin(), allowed.end());
+    for (const auto& [k, v] : obj.items())
+      if (!ok.count(k)) fail(where.empty() ? k : where + "." + k, "unknown key (schema version 1)");
+  }
+  double number(const json& v, const std::string& where) const {
+    if (!v.is_number()) fail(where, "must be a number, not " + std::string(v.type_name()));
+    const double d = v.get<double>();
+    if (!std::isfinite(d)) fail(where, "is not a finite number");
+    return d;
+  }
+  // A 0-based node index below `nodes`.
+  int node(const json& v, const std::string& where, int nodes) const {
+    if (!v.is_number_integer()) fail(where, "a node index must be an integer, not " + v.dump());
+    const auto i = v.get<std::int64_t>();
+    if (i < 0 || i >= nodes)
+      fail(where, "node index " + v.dump() + " is out of range (the model has " + std::to_string(nodes) +
+                      " nodes, numbered from 0)");
+    return static_cast<int>(i);
+  }
+  std::string string(const json& v, const std::string& where) const {
+    if (!v.is_string()) fail(where, "must be a string");
+    return v.get<std::string>();
+  }
+  const json& array(const json& v, const std::string& where, long size = -1) const {
+    if (!v.is_array()) fail(where, "must be an array");
+    if (size >= 0 && static_cast<long>(v.size()) != size)
+      fail(where, "must have " + std::to_string(size) + " entries, not " + std::to_string(v.size()));
+    return v;
+  }
+  static std::string at(const std::string& where, size_t i) { return where + "[" + std::to_string(i) + "]"; }
+
+ private:
+  std::string m_source;
+};
+
+material::Material read_material(const Reader& r, const json& j, double& density) {
+  r.only_keys(j, "material", {"law", "youngs_modulus", "poisson_ratio", "plane", "thickness", "density"});
+  material::Material m;
+  try {
+    m.law = material::law_from_name(r.string(r.key(j, "material", "law"), "material.law"));
+  } catch (const InvalidArgument& e) {
+    r.fail("material.law", e.what());
+  }
+  m.youngs_modulus = r.number(r.key(j, "material", "youngs_modulus"), "material.youngs_modulus");
+  m.poisson_ratio = r.number(r.key(j, "material", "poisson_ratio"), "material.poisson_ratio");
+  const std::string plane = r.string(r.key(j, "material", "plane"), "material.plane");
+  if (plane != "stress" && plane != "strain") r.fail("material.plane", "must be \"stress\" or \"strain\"");
+  m.plane = plane == "stress" ? material::Plane::kStress : material::Plane::kStrain;
+  m.thickness = r.number(r.key(j, "material", "thickness"), "material.thickness");
+  density = r.number(r.key(j, "material", "density"), "material.density");
+  try {
+    material::validate(m);
+  } catch (const InvalidMaterial& e) {
+    r.fail("material", e.what());
+  }
+  return m;
+}
+
+mesh::ElementKind read_kind(const Reader& r, const json& j) {
+  const std::string name = r.string(r.key(j, "", "element_kind"), "element_kind");
+  for (auto k : {mesh::ElementKind::kTriangle, mesh::ElementKind::kQuad, mesh::ElementKind::kTet,
+                 mesh::ElementKind::kSurfaceTriangle})
+    if (mesh::element_kind_name(k) == name) return k;
+  r.fail("element_kind", "unknown element kind \"" + name + "\" (triangle, quad, tet, surface-triangle)");
+}
+
+RowMatX read_points(const Reader& r, const json& j, const char* key, long cols) {
+  const json& a = r.array(r.key(j, "", key), key);
+  RowMatX out(static_cast<Eigen::Index>(a.size()), cols);
+  for (size_t i = 0; i < a.size(); ++i) {
+    const json& row = r.array(a[i], Reader::at(key, i), cols);
+    for (long c = 0; c < cols; ++c)
+      out(static_cast<Eigen::Index>(i), c) = r.number(row[static_cast<size_t>(c)], Reader::at(key, i));
+  }
+  return out;
+}
+
+RowMatXi read_indices(const Reader& r, const json& a, const std::string& key, long cols, int nodes) {
+  RowMatXi out(static_cast<Eigen::Index>(a.size()), cols);
+  for (size_t i = 0; i < a.size(); ++i) {
+    const json& row = r.array(a[i], Reader::at(key, i), cols);
+    for (long c = 0; c < cols; ++c)
+      out(static_cast<Eigen::Index>(i), c) = r.node(row[static_cast<size_t>(c)], Reader::at(key, i), nodes);
+  }
+  return out;
+}
+
+void read_springs(const Reader& r, const json& j, int nodes, SpringModel& s) {
+  const json& a = r.array(r.key(j, "", "springs"), "springs");
+  s.pairs.resize(a.size());
+  s.stiffness.resize(static_cast<Eigen::Index>(a.size()));
+  s.rest_length.resize(static_cast<Eigen::Index>(a.size()));
+  for (size_t k = 0; k < a.size(); ++k) {
+    const std::string where = Reader::at("springs", k);
+    const json& row = r.array(a[k], where, 4);
+    for (size_t c = 0; c < 2; ++c) s.pairs[k][c] = r.node(row[c], where, nodes);
+    if (s.pairs[k][0] == s.pairs[k][1]) r.fail(where, "a spring needs two different nodes");
+    if (s.pairs[k][0] > s.pairs[k][1]) std::swap(s.pairs[k][0], s.pairs[k][1]);
+    const double stiffness = r.number(row[2], where), rest = r.number(row[3], where);
+    if (stiffness < 0.0) r.fail(where, "stiffness k = " + num(stiffness) + " N/m is negative");
+    if (!(rest > 0.0)) r.fail(where, "rest length l0 = " + num(rest) + " m must be > 0");
+    s.stiffness(static_cast<Eigen::Index>(k)) = stiffness;
+    s.rest_length(static_cast<Eigen::Index>(k)) = rest;
+  }
+}
+
+void read_volume_terms(const Reader& r, const json& j, int nodes, SpringModel& s) {
+  const json& v = r.array(r.key(j, "", "volume_terms"), "volume_terms");
+  s.volume_tets.resize(static_cast<Eigen::Index>(v.size()), 4);
+  s.volume_stiffness.resize(static_cast<Eigen::Index>(v.size()));
+  s.rest_volume.resize(static_cast<Eigen::Index>(v.size()));
+  for (size_t t = 0; t < v.size(); ++t) {
+    const std::string where = Reader::at("volume_terms", t);
+    const json& row = r.array(v[t], where, 6);
+    for (int c = 0; c < 4; ++c)
+      s.volume_tets(static_cast<Eigen::Index>(t), c) = r.node(row[static_cast<size_t>(c)], where, nodes);
+    s.volume_stiffness(static_cast<Eigen::Index>(t)) = r.number(row[4], where);
+    const double v0 = r.number(row[5], where);
+    if (!(v0 > 0.0)) r.fail(where, "rest volume V0 = " + num(v0) + " m^3 must be > 0");
+    s.rest_volume(static_cast<Eigen::Index>(t)) = v0;
+  }
+}
+
+SurfaceTerms read_surface(const Reader& r, const json& j, int nodes) {
+  r.only_keys(j, "surface", {"scheme", "centre", "anchor_law", "anchors", "volume_penalty"});
+  SurfaceTerms s;
+  s.scheme = r.string(r.key(j, "surface", "scheme"), "surface.scheme");
+  const json& c = r.array(r.key(j, "surface", "centre"), "surface.centre", 3);
+  for (size_t a = 0; a < 3; ++a) s.centre(static_cast<Eigen::Index>(a)) = r.number(c[a], "surface.centre");
+  try {
+    s.anchor_law = surface::anchor_law_from_name(r.string(r.key(j, "surface", "anchor_law"), "surface.anchor_law"));
+  } catch (const InvalidArgument& e) {
+    r.fail("surface.anchor_law", e.what());
+  }
+  const json& a = r.array(r.key(j, "surface", "anchors"), "surface.anchors", nodes);
+  s.k_normal.resize(nodes);
+  s.k_shear.resize(nodes);
+  s.normals.resize(nodes, 3);
+  for (size_t i = 0; i < a.size(); ++i) {
+    const std::string where = Reader::at("surface.anchors", i);
+    const json& row = r.array(a[i], where, 5);
+    s.k_normal(static_cast<Eigen::Index>(i)) = r.number(row[0], where);
+    s.k_shear(static_cast<Eigen::Index>(i)) = r.number(row[1], where);
+    for (int k = 0; k < 3; ++k)
+      s.normals(static_cast<Eigen::Index>(i), k) = r.number(row[static_cast<size_t>(2 + k)], where);
+  }
+  const json& v = r.key(j, "surface", "volume_penalty");
+  s.volume_penalty = !v.is_null();
+  if (!s.volume_penalty) return s;
+  r.only_keys(v, "surface.volume_penalty", {"force", "rest_volume", "bulk_modulus", "nodes"});
+  try {
+    s.volume_force = surface::volume_force_from_name(
+        r.string(r.key(v, "surface.volume_penalty", "force"), "surface.volume_penalty.force"));
+  } catch (const InvalidArgument& e) {
+    r.fail("surface.volume_penalty.force", e.what());
+  }
+  s.rest_volume = r.number(r.key(v, "surface.volume_penalty", "rest_volume"), "surface.volume_penalty.rest_volume");
+  s.bulk_modulus = r.number(r.key(v, "surface.volume_penalty", "bulk_modulus"), "surface.volume_penalty.bulk_modulus");
+  const json& n = r.array(r.key(v, "surface.volume_penalty", "nodes"), "surface.volume_penalty.nodes", nodes);
+  s.k_bulk.resize(nodes);
+  s.normal_length.resize(nodes);
+  for (size_t i = 0; i < n.size(); ++i) {
+    const std::string where = Reader::at("surface.volume_penalty.nodes", i);
+    const json& row = r.array(n[i], where, 2);
+    s.k_bulk(static_cast<Eigen::Index>(i)) = r.number(row[0], where);
+    s.normal_length(static_cast<Eigen::Index>(i)) = r.number(row[1], where);
+  }
+  return s;
+}
+
+std::vector<CertificateCase> read_certificate(const Reader& r, const json& j) {
+  std::vector<CertificateCase> out;
+  const json& a = r.array(j, "certificate");
+  for (size_t i = 0; i < a.size(); ++i) {
+    const std::string where = Reader::at("certificate", i);
+    r.only_keys(a[i], where, {"load", "strain", "max_error", "mean_error", "relative_l2"});
+    CertificateCase c;
+    c.load = r.string(r.key(a[i], where, "load"), where + ".load");
+    c.strain = r.number(r.key(a[i], where, "strain"), where + ".strain");
+    c.max_error = r.number(r.key(a[i], where, "max_error"), where + ".max_error");
+    c.mean_error = r.number(r.key(a[i], where, "mean_error"), where + ".mean_error");
+    c.relative_l2 = r.number(r.key(a[i], where, "relative_l2"), where + ".relative_l2");
+    out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string model_json(const CalibratedModel& m) {
+  validate_model(m, m.mesh.source.empty() ? std::string("the model") : m.mesh.source);
+  std::ostringstream out;
+  const int d = m.mesh.dim();
+  const material::Material& mat = m.material;
+  out << "{\n  \"format\": \"hooke-model\",\n  \"schema_version\": " << kModelSchemaVersion
+      << ",\n  \"hooke_version\": " << str(std::string(kVersion)) << ",\n  \"method\": " << str(m.method)
+      << ",\n  \"equation\": " << str(m.equation) << ",\n  \"source_mesh\": " << str(m.mesh.source)
+      << ",\n  \"units\": {\"length\": \"m\", \"stiffness\": \"N/m\", \"mass\": \"kg\", \"volume_stiffness\": \"J\"}"
+      << ",\n  \"material\": {\"law\": " << str(std::string(material::law_name(mat.law)))
+      << ", \"youngs_modulus\": " << num(mat.youngs_modulus) << ", \"poisson_ratio\": " << num(mat.poisson_ratio)
+      << ", \"plane\": " << str(plane_name(mat.plane)) << ", \"thickness\": " << num(mat.thickness)
+      << ", \"density\": " << num(m.density)
+      << "},\n  \"element_kind\": " << str(std::string(mesh::element_kind_name(m.mesh.kind))) << ",\n";
+  rows(out, "nodes", m.mesh.node_count(), [&](Eigen::Index i) { return vec_row(m.mesh.nodes, i); });
+  rows(out, "elements", m.mesh.element_count(), [&](Eigen::Index i) { return int_row(m.mesh.elements, i); });
+  rows(out, "masses", m.mesh.node_count(), [&](Eigen::Index i) { return num(m.masses(d * i)); });
+  const SpringModel& s = m.springs;
+  rows(out, "springs", static_cast<Eigen::Index>(s.pairs.size()), [&](Eigen::Index k) {
+    const auto& p = s.pairs[static_cast<size_t>(k)];
+    return "[" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " + num(s.stiffness(k)) + ", " +
+           num(s.rest_length(k)) + "]";
+  });
+  rows(out, "volume_terms", s.volume_tets.rows(), [&](Eigen::Index t) {
+    std::string row = "[";
+    for (int c = 0; c < 4; ++c) row += std::to_string(s.volume_tets(t, c)) + ", ";
+    return row + num(s.volume_stiffness(t)) + ", " + num(s.rest_volume(t)) + "]";
+  });
+  if (m.surface)
+    write_surface(out, *m.surface);
+  else
+    out << "  \"surface\": null,\n";
+  rows(out, "warnings", static_cast<Eigen::Index>(m.warnings.size()),
+       [&](Eigen::Index i) { return str(m.warnings[static_cast<size_t>(i)]); });
+  rows(
+      out, "certificate", static_cast<Eigen::Index>(m.certificate.size()),
+      [&](Eigen::Index i) {
+        const CertificateCase& c = m.certificate[static_cast<size_t>(i)];
+        return "{\"load\": " + str(c.load) + ", \"strain\": " + num(c.strain) + ", \"max_error\": " + num(c.max_error) +
+               ", \"mean_error\": " + num(c.mean_error) + ", \"relative_l2\": " + num(c.relative_l2) + "}";
+      },
+      true);
+  out << "}\n";
+  return out.str();
+}
+
+void write_model(const std::filesystem::path& path, const CalibratedModel& m) {
+  const std::string ext = path.extension().string();
+  if (ext == ".json") {
+    const std::string text = model_json(m);
+    write_file_atomically(path, [&](std::ostream& out) { out << text; });
+    return;
+  }
+  validate_model(m, m.mesh.source.empty() ? std::string("the model") : m.mesh.source);
+  const SpringModel& s = m.springs;
+  if (ext == ".csv") {
+    write_file_atomically(path, [&](std::ostream& out) {
+      out << "i,j,stiffness_n_per_m,rest_length_m\n";
+      for (size_t k = 0; k < s.pairs.size(); ++k)
+        out << s.pairs[k][0] << ',' << s.pairs[k][1] << ',' << num(s.stiffness(static_cast<Eigen::Index>(k))) << ','
+            << num(s.rest_length(static_cast<Eigen::Index>(k))) << '\n';
+    });
+    return;
+  }
+  if (ext == ".vtu") {
+    const int d = m.mesh.dim();
+    VecX node_mass(m.mesh.node_count());
+    for (int i = 0; i < m.mesh.node_count(); ++i) node_mass(i) = m.masses(d * i);
+    const std::filesystem::path elements = path.parent_path() / (path.stem().string() + "_elements.vtu");
+    io::write_vtu(elements, m.mesh, {{"mass", 1, node_mass}});
+    try {
+      io::write_vtu_lines(path, m.mesh.nodes, s.pairs, {{"mass", 1, node_mass}},
+                          {{"stiffness", 1, s.stiffness}, {"rest_length", 1, s.rest_length}});
+    } catch (...) {
+      std::error_code ignored;
+      std::filesystem::remove(elements, ignored);  // both files or neither
+      throw;
+    }
+    return;
+  }
+  throw InvalidArgument("model file '" + path.string() + "': use the extension .json, .vtu or .csv");
+}
+
+CalibratedModel parse_model(const std::string& text, const std::string& source) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    const auto byte = std::min<size_t>(e.byte, text.size());
+    const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(byte), '\n');
+    std::string what = e.what();
+    if (const auto p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
+    throw ParseError(source, line, "not valid JSON (" + what + ")");
+  }
+  const Reader r(source);
+  if (!j.is_object()) r.fail("(top level)", "a model file is a JSON object");
+  if (!j.contains("format") || j["format"] != "hooke-model") r.fail("format", "must be \"hooke-model\"");
+  const json& version = r.key(j, "", "schema_version");
+  if (!version.is_number_integer() || version.get<std::int64_t>() != kModelSchemaVersion)
+    r.fail("schema_version",
+           "is " + version.dump() + "; this hooke reads schema version " + std::to_string(kModelSchemaVersion));
+  r.only_keys(
+      j, "",
+      {"format", "schema_version", "hooke_version", "method", "equation", "source_mesh", "units", "material",
+       "element_kind", "nodes", "elements", "masses", "springs", "volume_terms", "surface", "warnings", "certificate"});
+  if (j.contains("units")) {
+    const json& u = j["units"];
+    r.only_keys(u, "units", {"length", "stiffness", "mass", "volume_stiffness"});
+    const std::pair<const char*, const char*> si[] = {
+        {"length", "m"}, {"stiffness", "N/m"}, {"mass", "kg"}, {"volume_stiffness", "J"}};
+    for (const auto& [k, unit] : si)
+      if (u.contains(k) && u[k] != unit)
+        r.fail(std::string("units.") + k, "must be \"" + std::string(unit) + "\" (model files are in SI units)");
+  }
+  CalibratedModel m;
+  m.method = r.string(r.key(j, "", "method"), "method");
+  m.equation = j.contains("equation") ? r.string(j["equation"], "equation") : std::string();
+  m.material = read_material(r, r.key(j, "", "material"), m.density);
+  const mesh::ElementKind kind = read_kind(r, j);
+  RowMatX nodes = read_points(r, j, "nodes", mesh::dimension(kind));
+  const int n = static_cast<int>(nodes.rows());
+  if (n == 0) r.fail("nodes", "the model has no nodes");
+  RowMatXi elements =
+      read_indices(r, r.array(r.key(j, "", "elements"), "elements"), "elements", mesh::nodes_per_element(kind), n);
+  m.mesh = mesh::make_mesh(kind, std::move(nodes), std::move(elements), source);
+  if (m.mesh.element_count() > 0) mesh::validate(m.mesh, {.fix_orientation = false});  // names the element
+  const json& masses = r.array(r.key(j, "", "masses"), "masses", n);
+  const int d = mesh::dimension(kind);
+  m.masses.resize(d * n);
+  for (size_t i = 0; i < masses.size(); ++i) {
+    const double mass = r.number(masses[i], Reader::at("masses", i));
+    if (!(mass > 0.0)) r.fail(Reader::at("masses", i), "mass " + num(mass) + " kg must be > 0");
+    m.masses.segment(d * static_cast<Eigen::Index>(i), d).setConstant(mass);
+  }
+  read_springs(r, j, n, m.springs);
+  read_volume_terms(r, j, n, m.springs);
+  if (j.contains("surface") && !j["surface"].is_null()) m.surface = read_surface(r, j["surface"], n);
+  if (j.contains("warnings")) {
+    const json& w = r.array(j["warnings"], "warnings");
+    for (size_t i = 0; i < w.size(); ++i) m.warnings.push_back(r.string(w[i], Reader::at("warnings", i)));
+  }
+  if (j.contains("certificate")) m.certificate = read_certificate(r, j["certificate"]);
+  try {
+    validate_model(m, source);
+  } catch (const InvalidArgument& e) {  // "source: entry: why" -> the same as a ParseError
+    std::string what = e.what();
+    if (what.rfind(source + ": ", 0) == 0) what = what.substr(source.size() + 2);
+    const auto colon = what.find(": ");
+    throw ParseError::at_entry(source, what.substr(0, colon), colon == std::string::npos ? "" : what.substr(colon + 2));
+  }
+  return m;
+}
+
+CalibratedModel read_model(const std::filesystem::path& path) {
+  if (path.extension() != ".json")
+    throw InvalidArgument("'" + path.string() + "': models are read from .json files (the .vtu and .csv are exports)");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot open model file '" + path.string() + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) throw IoError("failed while reading '" + path.string() + "'");
+  return parse_model(text.str(), path.string());
+}
+
+}  // namespace hooke::calibrate

@@ -1,0 +1,125 @@
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <hooke/calibrate/model_factory.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/experiments/load_case.hpp>
+#include <hooke/experiments/simulation.hpp>
+#include <hooke/mesh/measure.hpp>
+#include <hooke/mesh/reorder.hpp>
+#include <numeric>
+#include <string>
+
+namespace hooke::experiments {
+namespace {
+
+void check_options(const SimulationOptions& o, int dim, int nodes) {
+  if (!(o.dt > 0.0) || !std::isfinite(o.dt)) throw InvalidArgument("the time step dt must be > 0 s");
+  if (o.steps < 1) throw InvalidArgument("the number of steps must be at least 1");
+  if (!(o.damping_mass >= 0.0) || !(o.damping_stiffness >= 0.0) || !std::isfinite(o.damping_mass) ||
+      !std::isfinite(o.damping_stiffness))
+    throw InvalidArgument("the Rayleigh damping coefficients must be finite and >= 0");
+  if (o.probe_node < 0) return;
+  const bool drive = o.probe_offset.size() > 0, push = o.probe_force.size() > 0;
+  const VecX& v = drive ? o.probe_offset : o.probe_force;
+  if (drive == push || v.size() != dim)
+    throw InvalidArgument("a probe needs exactly one of an offset and a force, with " + std::to_string(dim) +
+                          " components");
+  if (!v.allFinite()) throw InvalidArgument("the probe's offset or force is not finite");
+  if (o.probe_node >= nodes)
+    throw InvalidArgument("probe node " + std::to_string(o.probe_node) + " is not a node of the model (it has " +
+                          std::to_string(nodes) + ")");
+}
+
+[[noreturn]] void fail_step(const char* what, int k, const SimulationOptions& o, double limit) {
+  throw SolverFailure("step " + std::to_string(k) + " " + what + " (" +
+                      std::string(solve::integrator_name(o.simulator.integrator)) + ", dt " + std::to_string(o.dt) +
+                      " s; explicit stability limit " + std::to_string(limit) +
+                      " s): use a smaller dt or an implicit integrator");
+}
+
+}  // namespace
+
+double quantile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[static_cast<size_t>(q * static_cast<double>(v.size() - 1) + 0.5)];
+}
+
+SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const SimulationOptions& o,
+                           const FrameSink& frames) {
+  const int d = file_model.mesh.dim(), n = file_model.mesh.node_count();
+  check_options(o, d, n);
+  // Reverse Cuthill-McKee order for cache locality (same trajectory: tests/solve/test_simulator.cpp); frames and
+  // the probe node stay in the model's numbering.
+  std::vector<int> new_to_old(static_cast<size_t>(n));
+  std::iota(new_to_old.begin(), new_to_old.end(), 0);
+  if (o.reorder && file_model.mesh.element_count() > 0) new_to_old = mesh::rcm_order(file_model.mesh);
+  const calibrate::CalibratedModel cm = calibrate::permute_nodes(file_model, new_to_old);
+  std::vector<int> old_to_new(new_to_old.size());
+  for (size_t k = 0; k < new_to_old.size(); ++k) old_to_new[static_cast<size_t>(new_to_old[k])] = static_cast<int>(k);
+  VecX out_u(d * n), out_v(d * n);
+  const calibrate::BuiltModel built = calibrate::build_model(cm);
+  const VecX& rest = built.model->rest_positions();
+
+  model::Problem problem = model::make_problem(built.model);
+  if (o.clamp_bottom && !cm.surface)
+    model::fix_nodes(problem, make_load_case(cm.mesh, LoadKind::kStretch, 0.0, cm.material.thickness).fixed_nodes);
+  solve::Dynamics dyn{cm.masses, VecX(), o.damping_mass, o.damping_stiffness};
+  if (o.gravity) {
+    dyn.gravity = VecX::Zero(d);
+    dyn.gravity(d - 1) = -9.81;  // along -y in 2D, -z in 3D: the meshes' vertical axis
+  }
+  solve::Simulator sim(problem, dyn, o.simulator);
+  solve::Probe probe;
+  if (o.probe_node >= 0) {
+    probe.nodes = {old_to_new[static_cast<size_t>(o.probe_node)]};
+    probe.drive_position = o.probe_offset.size() > 0;
+    probe.offset = probe.force = VecX::Zero(d);
+    sim.set_probe(probe);
+    if (built.volume_penalty) {  // the weights of Eq. 4 follow the probe (Arnab & Raja, Fig. 11)
+      const double radius = o.influence_radius > 0.0 ? o.influence_radius : 0.5 * mesh::bounding_box_diagonal(cm.mesh);
+      const VecX& v = probe.drive_position ? o.probe_offset : o.probe_force;
+      if (v.norm() > 0.0)
+        built.volume_penalty->set_interaction({cm.mesh.nodes.row(probe.nodes[0]).transpose(), Vec3(v), radius});
+    }
+  }
+  SimulationSummary s;
+  s.stable_time_step = sim.stable_time_step();
+  auto emit = [&](int k) {
+    if (!std::isfinite(sim.potential_energy())) fail_step("inverted an element", k, o, s.stable_time_step);
+    for (int i = 0; i < n; ++i) {
+      const int j = old_to_new[static_cast<size_t>(i)];
+      out_u.segment(d * i, d) = sim.positions().segment(d * j, d) - rest.segment(d * j, d);
+      out_v.segment(d * i, d) = sim.velocities().segment(d * j, d);
+    }
+    frames(k, sim.time(), out_u, out_v);
+  };
+  const int every = o.every > 0 ? o.every : std::max(1, o.steps / 100);
+  emit(0);
+  s.energy_start = sim.kinetic_energy() + sim.potential_energy();
+  s.step_ms.reserve(static_cast<size_t>(o.steps));
+  for (int k = 1; k <= o.steps; ++k) {
+    if (o.probe_node >= 0) {  // the probe ramps linearly to its offset or force over the run
+      const double ramp = static_cast<double>(k) / o.steps;
+      (probe.drive_position ? probe.offset : probe.force) =
+          ramp * (probe.drive_position ? o.probe_offset : o.probe_force);
+      sim.set_probe(probe);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const solve::StepReport r = sim.step(o.dt);
+    s.step_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    if (!sim.positions().allFinite() || !sim.velocities().allFinite())
+      fail_step("produced non-finite positions", k, o, s.stable_time_step);
+    s.not_converged += r.converged ? 0 : 1;
+    s.iterations += r.iterations;
+    s.beyond_stable_dt += r.beyond_stable_dt ? 1 : 0;
+    if (r.probe_force.size() > 0) s.max_probe_force = std::max(s.max_probe_force, r.probe_force.norm());
+    if (k % every == 0 || k == o.steps) emit(k);
+  }
+  s.energy_end = sim.kinetic_energy() + sim.potential_energy();
+  s.kinetic_end = sim.kinetic_energy();
+  s.time = sim.time();
+  return s;
+}
+
+}  // namespace hooke::experiments

@@ -1,0 +1,54 @@
+#pragma once
+/// A scripted dynamics run of any calibrated model (what `hooke simulate` does): bottom clamped (spring and FEM
+/// models) or held by its anchors (surface model), gravity, Rayleigh damping, a probe ramped over the run, frames
+/// handed to a sink, and a timing and energy summary.
+#include <functional>
+#include <hooke/calibrate/calibrated_model.hpp>
+#include <hooke/solve/simulator.hpp>
+#include <vector>
+
+namespace hooke::experiments {
+
+struct SimulationOptions {
+  solve::SimulatorOptions simulator;  ///< integrator and its settings
+  double dt = 1e-3;                   ///< time step, s (> 0)
+  int steps = 100;                    ///< number of steps (>= 1)
+  int every = 0;                      ///< a frame every this many steps; 0: about 100 frames
+  bool gravity = false;               ///< 9.81 m/s^2 down the vertical axis (y in 2D, z in 3D)
+  double damping_mass = 0.0;          ///< Rayleigh alpha, 1/s (>= 0)
+  double damping_stiffness = 0.0;     ///< Rayleigh beta, s (>= 0)
+  bool clamp_bottom = true;           ///< clamp the nodes of the lowest face (not for a surface model)
+  bool reorder = true;                ///< simulate in reverse Cuthill-McKee order (same trajectory, faster)
+  int probe_node = -1;                ///< node grabbed by the probe, in the model's numbering (-1: none)
+  VecX probe_offset;                  ///< drive the probe node by this offset, m (dim), ramped linearly
+  VecX probe_force;                   ///< or push it with this force, N (dim), ramped linearly
+  double influence_radius = 0.0;      ///< surface model: r of Eq. 4, m (0: half the bounding-box diagonal)
+};
+
+struct SimulationSummary {
+  std::vector<double> step_ms;    ///< wall time of each step, ms
+  long iterations = 0;            ///< Newton / local-global iterations over the run
+  int not_converged = 0;          ///< steps that ended above the Newton tolerance
+  int beyond_stable_dt = 0;       ///< explicit steps beyond the stability limit
+  double stable_time_step = 0.0;  ///< explicit stability limit, s
+  double energy_start = 0.0;      ///< kinetic + potential at t = 0, J
+  double energy_end = 0.0;        ///< at the end, J
+  double kinetic_end = 0.0;       ///< J
+  double max_probe_force = 0.0;   ///< largest |force on the device| over the run, N
+  double time = 0.0;              ///< simulated time, s
+};
+
+/// Receives a frame: step number, time (s), displacement and velocity (flat, in the model's node order).
+using FrameSink = std::function<void(int step, double time, const VecX& displacement, const VecX& velocity)>;
+
+/// Runs `model` for options.steps steps, calling `frames` at step 0, every options.every steps and at the end.
+/// @throws InvalidArgument for options out of range (dt <= 0, steps < 1, a probe without exactly one of offset
+///   and force of dim components, a probe node out of range); SolverFailure when a step inverts an element or
+///   produces non-finite positions
+SimulationSummary simulate(const calibrate::CalibratedModel& model, const SimulationOptions& options,
+                           const FrameSink& frames);
+
+/// Median (q = 0.5) or other quantile of `values` (nearest rank); 0 for none.
+double quantile(std::vector<double> values, double q);
+
+}  // namespace hooke::experiments

@@ -1,0 +1,130 @@
+// Scripted runs: a model read back from its file runs the same trajectory as the calibrated one, one model is
+// stepped by two simulators on two threads at once, and bad options are refused by the library.
+#include <gtest/gtest.h>
+
+#include <hooke/calibrate/model_factory.hpp>
+#include <hooke/calibrate/model_file.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/experiments/simulation.hpp>
+#include <hooke/mesh/generators.hpp>
+#include <thread>
+
+namespace hooke::experiments {
+namespace {
+
+calibrate::CalibratedModel cylinder(const std::string& method = "lloyd-tet") {
+  calibrate::ModelOptions o;
+  o.method = method;
+  return calibrate::calibrate_model(mesh::tet_cylinder(0.01, 0.04, 8, 6), {material::Law::kLinear, 14630.0, 0.3}, o);
+}
+
+std::vector<VecX> run(const calibrate::CalibratedModel& m, const SimulationOptions& o) {
+  std::vector<VecX> frames;
+  simulate(m, o, [&](int, double, const VecX& u, const VecX&) { frames.push_back(u); });
+  return frames;
+}
+
+SimulationOptions gravity_run(solve::Integrator integrator) {
+  SimulationOptions o;
+  o.simulator.integrator = integrator;
+  o.steps = 30;
+  o.every = 10;
+  o.gravity = true;
+  o.damping_mass = 2.0;
+  o.probe_node = 5;
+  o.probe_offset = Vec3(0.0, 1e-3, 0.0);
+  return o;
+}
+
+class ModelFromFile : public testing::TestWithParam<solve::Integrator> {};
+
+TEST_P(ModelFromFile, RunsTheTrajectoryOfTheCalibratedModel) {
+  const calibrate::CalibratedModel a = cylinder();
+  const calibrate::CalibratedModel b = calibrate::parse_model(calibrate::model_json(a), "m.json");
+  SimulationOptions o = gravity_run(GetParam());
+  if (GetParam() == solve::Integrator::kSymplecticEuler) o.dt = 1e-5;
+  const auto fa = run(a, o), fb = run(b, o);
+  ASSERT_EQ(fa.size(), 4u);
+  ASSERT_EQ(fb.size(), fa.size());
+  EXPECT_GT(fa.back().norm(), 1e-6);  // it moved
+  for (size_t k = 0; k < fa.size(); ++k) EXPECT_LE((fa[k] - fb[k]).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, ModelFromFile,
+                         testing::Values(solve::Integrator::kSymplecticEuler, solve::Integrator::kImplicitEuler,
+                                         solve::Integrator::kLocalGlobal, solve::Integrator::kQuasiStatic));
+
+TEST(Simulation, ReorderingKeepsTheTrajectoryInTheModelsNumbering) {
+  const calibrate::CalibratedModel m = cylinder();
+  SimulationOptions o = gravity_run(solve::Integrator::kLocalGlobal);
+  const auto reordered = run(m, o);
+  o.reorder = false;
+  const auto plain = run(m, o);
+  EXPECT_LT((reordered.back() - plain.back()).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(Simulation, OneModelSteppedByTwoSimulatorsOnTwoThreads) {
+  const auto built = calibrate::build_model(cylinder());
+  const calibrate::CalibratedModel cm = cylinder();
+  model::Problem problem = model::make_problem(built.model);
+  model::fix_nodes(problem, {0, 1, 2});
+  auto trajectory = [&](double gravity) {
+    solve::Dynamics dyn{cm.masses, Vec3(0.0, 0.0, gravity), 1.0, 0.0};
+    solve::SimulatorOptions so;
+    so.integrator = solve::Integrator::kImplicitEuler;
+    solve::Simulator sim(problem, dyn, so);
+    for (int k = 0; k < 15; ++k) sim.step(1e-3);
+    return sim.positions();
+  };
+  const VecX serial_a = trajectory(-9.81), serial_b = trajectory(-3.0);
+  VecX parallel_a, parallel_b;
+  std::thread ta([&] { parallel_a = trajectory(-9.81); });
+  std::thread tb([&] { parallel_b = trajectory(-3.0); });
+  ta.join();
+  tb.join();
+  EXPECT_LT((serial_a - built.model->rest_positions()).norm(), 1.0);
+  EXPECT_GT((serial_a - serial_b).norm(), 1e-7);  // two different runs
+  EXPECT_LE((parallel_a - serial_a).cwiseAbs().maxCoeff(), 1e-13);
+  EXPECT_LE((parallel_b - serial_b).cwiseAbs().maxCoeff(), 1e-13);
+}
+
+TEST(Simulation, RefusesOptionsOutOfRange) {
+  const calibrate::CalibratedModel m = cylinder();
+  auto refuses = [&](auto change) {
+    SimulationOptions o;
+    o.steps = 2;
+    change(o);
+    EXPECT_THROW(run(m, o), InvalidArgument);
+  };
+  refuses([](SimulationOptions& o) { o.dt = 0.0; });
+  refuses([](SimulationOptions& o) { o.dt = std::nan(""); });
+  refuses([](SimulationOptions& o) { o.steps = 0; });
+  refuses([](SimulationOptions& o) { o.damping_mass = -1.0; });
+  refuses([](SimulationOptions& o) { o.damping_stiffness = std::nan(""); });
+  refuses([](SimulationOptions& o) {
+    o.simulator.integrator = solve::Integrator::kLocalGlobal;
+    o.simulator.local_global_iterations = 0;
+  });
+  refuses([](SimulationOptions& o) { o.probe_node = 3; });  // neither offset nor force
+  refuses([](SimulationOptions& o) {
+    o.probe_node = 100000;
+    o.probe_force = Vec3(0, 0, 1);
+  });
+}
+
+TEST(Simulator, LibraryRefusesInvalidOptions) {
+  const auto built = calibrate::build_model(cylinder());
+  const calibrate::CalibratedModel cm = cylinder();
+  const model::Problem problem = model::make_problem(built.model);
+  solve::SimulatorOptions lg;
+  lg.integrator = solve::Integrator::kLocalGlobal;
+  lg.local_global_iterations = 0;
+  EXPECT_THROW(solve::Simulator(problem, {cm.masses, VecX(), 0.0, 0.0}, lg), InvalidArgument);
+  EXPECT_THROW(solve::Simulator(problem, {cm.masses, VecX(), -1.0, 0.0}), InvalidArgument);
+  solve::Simulator sim(problem, {cm.masses, VecX(), 0.0, 0.0});
+  EXPECT_THROW(sim.step(0.0), InvalidArgument);
+  EXPECT_THROW(sim.step(-1e-3), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace hooke::experiments
