@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The test command (README, .ci/run): installs the Debian packages, builds with -Werror, runs every test,
-# then rebuilds with AddressSanitizer + UndefinedBehaviorSanitizer and runs the unit tests again.
+# The test command (README, .ci/run): installs the Debian packages, builds with -Werror, runs every test, builds
+# examples/ against the installed package, then rebuilds with AddressSanitizer + UndefinedBehaviorSanitizer and
+# runs the unit tests again.
 # Usage: scripts/test.sh [--no-sanitizers]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,6 +12,7 @@ export MPLBACKEND=Agg
 cmake --preset ci > /dev/null
 cmake --build --preset ci -j "$jobs"
 ctest --preset ci -j "$jobs"
+bash scripts/check_install.sh build/ci   # examples/ against the installed package, not the build tree
 
 if [ "${1:-}" != "--no-sanitizers" ]; then
   cmake --preset asan > /dev/null
