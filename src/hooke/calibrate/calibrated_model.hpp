@@ -53,7 +53,7 @@ struct CalibratedModel {
 };
 
 /// Checks that `model` is consistent: node and element indices in range, finite positions, k >= 0, l0 > 0,
-/// volume terms on tets with V0 > 0 and finite k_V (k_V may be negative: issue 15's any-nu models), masses > 0,
+/// volume terms on tets with V0 > 0 and k_V >= 0, masses > 0,
 /// surface arrays of one entry per node. Throws naming the entry as the model file does ("springs[12]").
 /// @param source  name used in messages (the file)
 /// @throws InvalidArgument naming `source` and the entry
