@@ -64,7 +64,7 @@ void BM_Step(benchmark::State& state) {
 BENCHMARK(BM_DynTriad)->Unit(benchmark::kMillisecond)->Iterations(5);
 BENCHMARK(BM_SpringForces)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Step)
-    ->ArgsProduct({{0, 1}, {0, 1, 2, 3, 4}})
+    ->ArgsProduct({{0, 1}, {0, 1, 2, 3, 4, 5}})
     ->Args({2, 0})
     ->Args({2, 3})
     ->Unit(benchmark::kMillisecond)

@@ -58,7 +58,8 @@ int run_bench(const BenchCli& o) {
                             {"dt", t.dt},
                             {"median_ms", t.median_ms},
                             {"p95_ms", t.p95_ms},
-                            {"iterations", t.iterations}});
+                            {"iterations", t.iterations},
+                            {"error_vs_converged", t.error_vs_converged}});
     j["notes"] = report.notes;
     write_file_atomically(dir / "bench.json", [&](std::ostream& out) { out << j.dump(2) << "\n"; });
     std::printf("wrote %s and bench.json\n", (dir / "bench.md").string().c_str());

@@ -73,8 +73,10 @@ Action add_simulate_command(CLI::App& app) {
                   "surface: radius of influence of the probe's interaction weights (Eq. 4), m (default: half the "
                   "bounding-box diagonal)");
   cmd->add_option("--law", o->in.law, "FEM law with --method fem: linear, stvk, neohookean")->capture_default_str();
-  cmd->add_option("--integrator", o->integrator,
-                  "symplectic-euler, velocity-verlet, implicit-euler, local-global, quasi-static")
+  cmd->add_option(
+         "--integrator", o->integrator,
+         "symplectic-euler, velocity-verlet, implicit-euler, implicit-euler-linearised (one Newton iteration per "
+         "step, Baraff & Witkin), local-global, quasi-static")
       ->capture_default_str();
   cmd->add_option("--linear-solver", o->linear_solver, "Newton steps: cholesky or cg")->capture_default_str();
   cmd->add_option("--global-solve", o->global_solve,

@@ -1,10 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <hooke/mesh/generators.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <hooke/mesh/topology.hpp>
 #include <hooke/mesh/validate.hpp>
+#include <map>
 
 namespace hooke::mesh {
 namespace {
@@ -80,18 +83,46 @@ namespace {
 // The benchmark cylinders: node counts as documented, every tet positive, the concentric map keeps each cell's
 // volume, so the total is the inscribed polygonal prism's (pi r^2 h from below).
 TEST(Generators, TetCylinderCountsAndPositiveVolumes) {
-  const Mesh m = tet_cylinder(0.01, 0.02, 10, 8);
-  EXPECT_EQ(m.node_count(), 11 * 11 * 9);
-  EXPECT_EQ(m.element_count(), 6 * 100 * 8);
+  const Mesh m = tet_cylinder(0.01, 0.02, 12, 8);  // O-grid: 6 x 6 square cells, a ring of 24 x 3
+  EXPECT_EQ(m.node_count(), (7 * 7 + 24 * 3) * 9);
+  EXPECT_EQ(m.element_count(), 6 * (36 + 72) * 8);
   double total = 0.0, smallest = 1.0;
   for (int e = 0; e < m.element_count(); ++e) {
     total += element_measure(m, e);
     smallest = std::min(smallest, element_measure(m, e));
   }
   EXPECT_GT(smallest, 0.0);
-  EXPECT_LT(total, M_PI * 1e-4 * 0.02);
-  EXPECT_GT(total, 0.99 * M_PI * 1e-4 * 0.02);
+  // The tets fill the prism over the 24-gon inscribed in the circle (4 x 6 rim nodes at equal angles) exactly.
+  const double polygon = 12.0 * 1e-4 * std::sin(2.0 * M_PI / 24.0),
+               perimeter = 24.0 * 2.0 * 0.01 * std::sin(M_PI / 24.0);
+  EXPECT_NEAR(total, polygon * 0.02, 1e-12 * total);
   EXPECT_NEAR(m.nodes.col(0).cwiseAbs().maxCoeff(), 0.01, 1e-15);
+  Mesh checked = m;
+  EXPECT_NO_THROW(validate(checked, {.fix_orientation = false}));  // positive, nothing degenerate
+  // No slivers: the square-to-disc map it replaces made tets of quality 0.03 in the square's corner cells.
+  double worst = 1.0;
+  for (int e = 0; e < m.element_count(); ++e) worst = std::min(worst, element_quality(m, e));
+  EXPECT_GT(worst, 0.25);
+  // Conforming: every interior triangle is shared by exactly two tets, so the faces used once are exactly the
+  // prism's surface (two 24-gons and the rim).
+  std::map<std::array<int, 3>, int> faces;
+  for (int e = 0; e < m.element_count(); ++e)
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<int, 3> f{};
+      for (int k = 0, q = 0; k < 4; ++k)
+        if (k != skip) f[static_cast<size_t>(q++)] = m.elements(e, k);
+      std::sort(f.begin(), f.end());
+      ++faces[f];
+    }
+  double area = 0.0;
+  for (const auto& [f, count] : faces) {
+    ASSERT_LE(count, 2);
+    if (count == 1) {
+      const Vec3 a = m.nodes.row(f[0]), b = m.nodes.row(f[1]), c = m.nodes.row(f[2]);
+      area += 0.5 * (b - a).cross(c - a).norm();
+    }
+  }
+  EXPECT_NEAR(area, 2.0 * polygon + perimeter * 0.02, 1e-12 * area);
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ namespace {
 
 // One spring (k, l0 = 1 m) from a fixed node at the origin to a node of mass m on the x axis: along the axis
 // the force is exactly -k (x - 1), so x(t) = 1 + a cos(omega t), omega = sqrt(k / m).
-Simulator oscillator(Integrator integrator, double k, double mass, double amplitude) {
+Simulator oscillator(Integrator integrator, double k, double mass, double amplitude, bool project_psd = true) {
   VecX rest(4);
   rest << 0, 0, 1, 0;
   auto model = std::make_shared<model::Model>(2, rest);
@@ -36,6 +36,7 @@ Simulator oscillator(Integrator integrator, double k, double mass, double amplit
   o.integrator = integrator;
   o.local_global_iterations = 200;
   o.newton_tolerance = 1e-13;
+  o.project_psd = project_psd;
   Simulator s(p, {VecX::Constant(4, mass), VecX(), 0.0, 0.0}, o);
   VecX x = rest;
   x(2) += amplitude;
@@ -60,6 +61,7 @@ TEST(Simulator, ConvergenceOrderOnTheHarmonicOscillator) {
   } cases[] = {{Integrator::kSymplecticEuler, 1.0},
                {Integrator::kVelocityVerlet, 2.0},
                {Integrator::kImplicitEuler, 1.0},
+               {Integrator::kImplicitEulerLinearised, 1.0},
                {Integrator::kLocalGlobal, 1.0}};
   for (const auto& c : cases) {
     const double e1 = oscillator_error(c.integrator, 200), e2 = oscillator_error(c.integrator, 400),
@@ -69,6 +71,23 @@ TEST(Simulator, ConvergenceOrderOnTheHarmonicOscillator) {
               << " m; observed orders " << r1 << ", " << r2 << "\n";
     EXPECT_NEAR(r2, c.order, 0.15) << integrator_name(c.integrator);
   }
+}
+
+// Along its axis the spring force is linear in x, so Baraff-Witkin's single linear solve is the exact backward
+// Euler step: both integrators follow the same trajectory (to the converged one's Newton tolerance). Without the
+// PSD projection only: projecting a compressed spring's Hessian drops its k (1 - l0/l) I term, which changes the
+// axial stiffness of the one iteration (the converged step iterates that away).
+TEST(Simulator, LinearisedImplicitEulerIsExactOnALinearSystem) {
+  Simulator a = oscillator(Integrator::kImplicitEuler, 40.0, 1.0, 0.1, false),
+            b = oscillator(Integrator::kImplicitEulerLinearised, 40.0, 1.0, 0.1, false);
+  for (int i = 0; i < 300; ++i) {
+    a.step(0.01);
+    const StepReport r = b.step(0.01);
+    EXPECT_EQ(r.iterations, 1);
+  }
+  EXPECT_GT(std::abs(a.positions()(2) - 1.0), 1e-4);
+  EXPECT_LT((a.positions() - b.positions()).cwiseAbs().maxCoeff(), 1e-10);
+  EXPECT_LT((a.velocities() - b.velocities()).cwiseAbs().maxCoeff(), 1e-9);
 }
 
 TEST(Simulator, StableTimeStepOfTheOscillatorIsTwoOverOmega) {
@@ -177,10 +196,12 @@ TEST(Simulator, ImplicitAndQuasiStaticSettleToTheStaticEquilibrium) {
   const StaticResult ref = static_equilibrium(statics);
   ASSERT_EQ(ref.report.status, SolveStatus::kConverged);
   const double scale = (ref.positions - box.model->rest_positions()).cwiseAbs().maxCoeff();
-  for (int variant = 0; variant < 5; ++variant) {
-    const Integrator integrator =
-        std::array{Integrator::kImplicitEuler, Integrator::kQuasiStatic, Integrator::kLocalGlobal,
-                   Integrator::kImplicitEuler, Integrator::kLocalGlobal}[static_cast<size_t>(variant)];
+  for (int variant = 0; variant < 6; ++variant) {
+    const Integrator
+        integrator = std::array{Integrator::kImplicitEuler, Integrator::kQuasiStatic,
+                                Integrator::kLocalGlobal,   Integrator::kImplicitEuler,
+                                Integrator::kLocalGlobal,   Integrator::kImplicitEulerLinearised}[static_cast<size_t>(
+            variant)];
     SimulatorOptions o;
     o.integrator = integrator;
     if (variant == 3) o.linear_solver = NewtonLinearSolver::kConjugateGradient;

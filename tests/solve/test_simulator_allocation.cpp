@@ -141,6 +141,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{Integrator::kLocalGlobal, NewtonLinearSolver::kCholesky, false, true},
                       Case{Integrator::kImplicitEuler, NewtonLinearSolver::kConjugateGradient, false},
                       Case{Integrator::kQuasiStatic, NewtonLinearSolver::kConjugateGradient, false},
+                      Case{Integrator::kImplicitEulerLinearised, NewtonLinearSolver::kConjugateGradient, false},
                       Case{Integrator::kImplicitEuler, NewtonLinearSolver::kConjugateGradient, true},
                       Case{Integrator::kVelocityVerlet, NewtonLinearSolver::kCholesky, true}),
     case_name);

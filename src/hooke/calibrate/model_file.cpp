@@ -19,6 +19,13 @@ using nlohmann::json;
 // ---- writing: one row (node, element, spring) a line, numbers as nlohmann prints them (shortest round trip)
 
 std::string num(double v) { return json(v).dump(); }
+
+// Concatenation without `const char* + std::string&&`, on which GCC 12 raises a false -Wrestrict.
+std::string join(std::initializer_list<std::string_view> parts) {
+  std::string out;
+  for (const std::string_view p : parts) out += p;
+  return out;
+}
 std::string str(const std::string& s) { return json(s).dump(); }
 
 template <typename RowFn>
@@ -287,8 +294,8 @@ std::string model_json(const CalibratedModel& m) {
   const SpringModel& s = m.springs;
   rows(out, "springs", static_cast<Eigen::Index>(s.pairs.size()), [&](Eigen::Index k) {
     const auto& p = s.pairs[static_cast<size_t>(k)];
-    return "[" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " + num(s.stiffness(k)) + ", " +
-           num(s.rest_length(k)) + "]";
+    return join({"[", std::to_string(p[0]), ", ", std::to_string(p[1]), ", ", num(s.stiffness(k)), ", ",
+                 num(s.rest_length(k)), "]"});
   });
   rows(out, "volume_terms", s.volume_tets.rows(), [&](Eigen::Index t) {
     std::string row = "[";
@@ -305,8 +312,8 @@ std::string model_json(const CalibratedModel& m) {
       out, "certificate", static_cast<Eigen::Index>(m.certificate.size()),
       [&](Eigen::Index i) {
         const CertificateCase& c = m.certificate[static_cast<size_t>(i)];
-        return "{\"load\": " + str(c.load) + ", \"strain\": " + num(c.strain) + ", \"max_error\": " + num(c.max_error) +
-               ", \"mean_error\": " + num(c.mean_error) + ", \"relative_l2\": " + num(c.relative_l2) + "}";
+        return join({"{\"load\": ", str(c.load), ", \"strain\": ", num(c.strain), ", \"max_error\": ", num(c.max_error),
+                     ", \"mean_error\": ", num(c.mean_error), ", \"relative_l2\": ", num(c.relative_l2), "}"});
       },
       true);
   out << "}\n";

@@ -1,12 +1,12 @@
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
-#include <hooke/calibrate/method.hpp>
+#include <hooke/calibrate/model_factory.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/dynamics_benchmark.hpp>
 #include <hooke/experiments/load_case.hpp>
 #include <hooke/mesh/generators.hpp>
-#include <hooke/model/mass.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <hooke/springs/spring_block.hpp>
 #include <sstream>
@@ -46,77 +46,146 @@ double triad_bytes_per_second() {
 
 }  // namespace
 
+mesh::Mesh benchmark_cylinder(int size) {
+  if (size < 0 || size > 2) throw InvalidArgument("benchmark mesh sizes are 0, 1, 2 (1k, 10k, 100k nodes)");
+  const int n[3] = {12, 24, 48}, layers[3] = {8, 24, 57};
+  return mesh::tet_cylinder(0.01, 0.02, n[size], layers[size]);
+}
+
+calibrate::CalibratedModel benchmark_model(int size) {
+  calibrate::ModelOptions o;
+  o.method = "lloyd-tet";
+  o.density = 1000.0;
+  return calibrate::calibrate_model(benchmark_cylinder(size), {material::Law::kLinear, 14630.0, 0.25}, o);
+}
+
+namespace {
+
+struct Run {
+  solve::Integrator integrator;
+  solve::GlobalSolve global_solve;
+  const char* name;
+  solve::NewtonLinearSolver linear_solver = solve::NewtonLinearSolver::kCholesky;
+};
+// local-global twice: with its prefactored direct global step and with the Chebyshev-Jacobi one.
+constexpr Run kRuns[] = {
+    {solve::Integrator::kSymplecticEuler, solve::GlobalSolve::kDirect, "symplectic-euler"},
+    {solve::Integrator::kVelocityVerlet, solve::GlobalSolve::kDirect, "velocity-verlet"},
+    {solve::Integrator::kImplicitEuler, solve::GlobalSolve::kDirect, "implicit-euler (cholesky)"},
+    {solve::Integrator::kImplicitEuler, solve::GlobalSolve::kDirect, "implicit-euler (cg)",
+     solve::NewtonLinearSolver::kConjugateGradient},
+    {solve::Integrator::kImplicitEulerLinearised, solve::GlobalSolve::kDirect, "implicit-euler-linearised (cholesky)"},
+    {solve::Integrator::kImplicitEulerLinearised, solve::GlobalSolve::kDirect, "implicit-euler-linearised (cg)",
+     solve::NewtonLinearSolver::kConjugateGradient},
+    {solve::Integrator::kLocalGlobal, solve::GlobalSolve::kDirect, "local-global (direct)"},
+    {solve::Integrator::kLocalGlobal, solve::GlobalSolve::kChebyshev, "local-global (chebyshev)"},
+    {solve::Integrator::kQuasiStatic, solve::GlobalSolve::kDirect, "quasi-static"}};
+
+bool is_explicit(solve::Integrator i) {
+  return i == solve::Integrator::kSymplecticEuler || i == solve::Integrator::kVelocityVerlet;
+}
+
+// Why the state after step k is not one a user could reach (empty when it is).
+std::string inadmissible(const solve::Simulator& sim, const solve::StepReport& r, int k) {
+  if (!sim.positions().allFinite() || !sim.velocities().allFinite())
+    return "step " + std::to_string(k) + " produced non-finite positions";
+  if (!std::isfinite(sim.potential_energy())) return "step " + std::to_string(k) + " inverted an element";
+  if (!r.converged) return "step " + std::to_string(k) + " ended above the Newton tolerance";
+  return {};
+}
+
+// Positions after 1 + steps steps of implicit Euler with Newton converged to 1e-12: the accuracy reference.
+VecX converged_reference(const model::Problem& problem, const solve::Dynamics& dynamics, double dt, int steps) {
+  solve::SimulatorOptions o;
+  o.integrator = solve::Integrator::kImplicitEuler;
+  o.newton_tolerance = 1e-12;
+  o.max_newton_iterations = 200;
+  solve::Simulator sim(problem, dynamics, o);
+  for (int k = 0; k <= steps; ++k) sim.step(dt);
+  return sim.positions();
+}
+
+double relative_error(const VecX& x, const VecX& reference, const VecX& rest) {
+  double error = 0.0, scale = 0.0;
+  for (Eigen::Index i = 0; i < x.size() / 3; ++i) {
+    error = std::max(error, (x.segment<3>(3 * i) - reference.segment<3>(3 * i)).norm());
+    scale = std::max(scale, (reference.segment<3>(3 * i) - rest.segment<3>(3 * i)).norm());
+  }
+  return scale > 0.0 ? error / scale : 0.0;
+}
+
+SpringThroughput spring_throughput(const calibrate::CalibratedModel& cm, double triad) {
+  const springs::SpringBlock springs(3, cm.springs.pairs, cm.springs.stiffness, cm.springs.rest_length);
+  const VecX x = Eigen::Map<const VecX>(cm.mesh.nodes.data(), cm.mesh.nodes.size()) * 1.01;
+  VecX g = VecX::Zero(x.size());
+  std::vector<double> ms;
+  for (int pass = 0; pass < 31; ++pass) {
+    g.setZero();
+    const auto t0 = Clock::now();
+    springs.add_gradient(x, g);
+    if (pass > 0) ms.push_back(ms_since(t0));
+  }
+  const double seconds = quantile(ms, 0.5) * 1e-3;
+  const auto count = static_cast<double>(springs.pairs().size());
+  return {cm.mesh.node_count(), static_cast<int>(count), seconds / count * 1e9,
+          (24.0 * count + 72.0 * cm.mesh.node_count()) / seconds / triad};
+}
+
+}  // namespace
+
 DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& options) {
   if (options.steps < 1) throw InvalidArgument("the benchmark needs at least one step per integrator");
+  for (int size : options.sizes) benchmark_cylinder(size);  // refuse a bad size before measuring anything
   DynamicsBenchmarkReport report;
   const double triad = triad_bytes_per_second();
   report.triad_gbps = triad * 1e-9;
   for (int size : options.sizes) {
-    if (size < 0 || size > 2) throw InvalidArgument("benchmark mesh sizes are 0, 1, 2 (1k, 10k, 100k nodes)");
-    const int n[3] = {10, 20, 44}, layers[3] = {8, 24, 50};
-    const mesh::Mesh m = mesh::tet_cylinder(0.01, 0.02, n[size], layers[size]);
-    auto model = calibrate::make_model(
-        m, calibrate::calibrate(m, {{material::Law::kLinear, 14630.0, 0.25}}, calibrate::Method::kLloydTet));
-    const springs::SpringBlock* springs = nullptr;
-    for (const auto& b : model->blocks())
-      if (const auto* s = dynamic_cast<const springs::SpringBlock*>(b.get())) springs = s;
-    {
-      const VecX x = model->rest_positions() * 1.01;
-      VecX g = VecX::Zero(x.size());
-      std::vector<double> ms;
-      for (int pass = 0; pass < 31; ++pass) {
-        g.setZero();
-        const auto t0 = Clock::now();
-        springs->add_gradient(x, g);
-        if (pass > 0) ms.push_back(ms_since(t0));
-      }
-      const double seconds = quantile(ms, 0.5) * 1e-3;
-      const auto count = static_cast<double>(springs->pairs().size());
-      report.springs.push_back({m.node_count(), static_cast<int>(count), seconds / count * 1e9,
-                                (24.0 * count + 72.0 * m.node_count()) / seconds / triad});
-    }
-    model::Problem problem = model::make_problem(model);
-    model::fix_nodes(problem, make_load_case(m, LoadKind::kStretch, 0.0).fixed_nodes);
-    VecX gravity = VecX::Zero(3);
-    gravity(2) = -9.81;
-    const solve::Dynamics dynamics{model::lumped_masses(m, 1000.0), gravity, 0.0, 0.0};
-    // local-global twice: with its prefactored direct global step and with the Chebyshev-Jacobi one.
-    const std::pair<solve::Integrator, solve::GlobalSolve> runs[] = {
-        {solve::Integrator::kSymplecticEuler, solve::GlobalSolve::kDirect},
-        {solve::Integrator::kVelocityVerlet, solve::GlobalSolve::kDirect},
-        {solve::Integrator::kImplicitEuler, solve::GlobalSolve::kDirect},
-        {solve::Integrator::kLocalGlobal, solve::GlobalSolve::kDirect},
-        {solve::Integrator::kLocalGlobal, solve::GlobalSolve::kChebyshev},
-        {solve::Integrator::kQuasiStatic, solve::GlobalSolve::kDirect}};
-    for (const auto& [integrator, global_solve] : runs) {
-      std::string name(solve::integrator_name(integrator));
-      if (integrator == solve::Integrator::kLocalGlobal)
-        name += global_solve == solve::GlobalSolve::kChebyshev ? " (chebyshev)" : " (direct)";
+    const calibrate::CalibratedModel cm = benchmark_model(size);
+    const int nodes = cm.mesh.node_count();
+    report.springs.push_back(spring_throughput(cm, triad));
+    model::Problem problem = model::make_problem(calibrate::build_model(cm).model);
+    model::fix_nodes(problem, make_load_case(cm.mesh, LoadKind::kStretch, 0.0).fixed_nodes);
+    const solve::Dynamics dynamics{cm.masses, Vec3(0.0, 0.0, -9.81), 0.0, 0.0};
+    VecX reference;
+    for (const Run& run : kRuns) {
+      const std::string on = " on " + std::to_string(nodes) + " nodes";
+      const bool factorises = run.linear_solver == solve::NewtonLinearSolver::kCholesky &&
+                              (run.integrator == solve::Integrator::kImplicitEuler ||
+                               run.integrator == solve::Integrator::kImplicitEulerLinearised ||
+                               run.integrator == solve::Integrator::kQuasiStatic);
       const bool newton =
-          integrator == solve::Integrator::kImplicitEuler || integrator == solve::Integrator::kQuasiStatic;
-      if (newton && size == 2) {
-        report.notes.push_back(name + " skipped on " + std::to_string(m.node_count()) +
-                               " nodes (a sparse factorisation of " + std::to_string(3 * m.node_count()) +
-                               " DOFs per Newton matrix)");
+          run.integrator == solve::Integrator::kImplicitEuler || run.integrator == solve::Integrator::kQuasiStatic;
+      if ((factorises || newton) && size == 2) {
+        report.notes.push_back(std::string(run.name) + " skipped" + on + " (a sparse factorisation of " +
+                               std::to_string(3 * nodes) + " DOFs per Newton iteration)");
         continue;
       }
       solve::SimulatorOptions o;
-      o.integrator = integrator;
-      o.global_solve = global_solve;
+      o.integrator = run.integrator;
+      o.global_solve = run.global_solve;
+      o.linear_solver = run.linear_solver;
       solve::Simulator sim(problem, dynamics, o);
-      const bool explicit_step =
-          integrator == solve::Integrator::kSymplecticEuler || integrator == solve::Integrator::kVelocityVerlet;
-      const double dt = explicit_step ? 0.9 * sim.stable_time_step() : options.dt;
-      sim.step(dt);
+      const double dt = is_explicit(run.integrator) ? 0.9 * sim.stable_time_step() : options.dt;
+      std::string why = inadmissible(sim, sim.step(dt), 1);
       std::vector<double> ms;
       double iterations = 0.0;
-      for (int k = 0; k < options.steps; ++k) {
+      for (int k = 0; k < options.steps && why.empty(); ++k) {
         const auto t0 = Clock::now();
-        iterations += sim.step(dt).iterations;
+        const solve::StepReport r = sim.step(dt);
         ms.push_back(ms_since(t0));
+        iterations += r.iterations;
+        why = inadmissible(sim, r, k + 2);
       }
-      report.steps.push_back(
-          {m.node_count(), name, dt, quantile(ms, 0.5), quantile(ms, 0.95), iterations / options.steps});
+      if (!why.empty()) {
+        report.notes.push_back(std::string(run.name) + on + " not reported: " + why);
+        continue;
+      }
+      StepTiming t{nodes, run.name, dt, quantile(ms, 0.5), quantile(ms, 0.95), iterations / options.steps};
+      if (!is_explicit(run.integrator) && run.integrator != solve::Integrator::kQuasiStatic && size < 2) {
+        if (reference.size() == 0) reference = converged_reference(problem, dynamics, options.dt, options.steps);
+        t.error_vs_converged = relative_error(sim.positions(), reference, problem.model->rest_positions());
+      }
+      report.steps.push_back(t);
     }
   }
   return report;
@@ -132,13 +201,17 @@ std::string dynamics_benchmark_markdown(const DynamicsBenchmarkReport& report) {
                   t.bandwidth_fraction);
     s << line;
   }
-  s << "\n| nodes | integrator | dt (ms) | ms/step median | ms/step p95 | iterations/step "
-       "|\n|---|---|---|---|---|---|\n";
+  s << "\n| nodes | integrator | dt (ms) | ms/step median | ms/step p95 | iterations/step | error vs converged "
+       "|\n|---|---|---|---|---|---|---|\n";
   for (const auto& t : report.steps) {
-    std::snprintf(line, sizeof line, "| %d | %s | %.3g | %.3f | %.3f | %.2f |\n", t.nodes, t.integrator.c_str(),
-                  1e3 * t.dt, t.median_ms, t.p95_ms, t.iterations);
+    char error[32] = "-";
+    if (t.error_vs_converged >= 0.0) std::snprintf(error, sizeof error, "%.2g", t.error_vs_converged);
+    std::snprintf(line, sizeof line, "| %d | %s | %.3g | %.3f | %.3f | %.2f | %s |\n", t.nodes, t.integrator.c_str(),
+                  1e3 * t.dt, t.median_ms, t.p95_ms, t.iterations, error);
     s << line;
   }
+  s << "\nerror vs converged: max node distance to implicit Euler with Newton to 1e-12 after the same steps, over its "
+       "largest displacement (same dt; - where the integrator solves another problem).\n";
   for (const auto& n : report.notes) s << "\n- " << n;
   if (!report.notes.empty()) s << "\n";
   return s.str();

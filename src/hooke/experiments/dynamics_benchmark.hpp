@@ -1,15 +1,24 @@
 #pragma once
 /// The dynamics benchmark behind `hooke bench` (bench/bench_dynamics.cpp measures the same with Google
-/// Benchmark, and adds Bullet): tetrahedral cylinders of about 1 000, 10 000 and 100 000 nodes (mesh::tet_cylinder,
+/// Benchmark, and adds Bullet): tetrahedral cylinders of about 1 000, 10 000 and 100 000 nodes (benchmark_cylinder,
 /// r 1 cm, h 2 cm, lloyd-tet springs for E 14 630 Pa, nu 0.25, 1 000 kg/m^3, bottom clamped, gravity).
+#include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/core/types.hpp>
 #include <string>
 #include <vector>
 
 namespace hooke::experiments {
 
+/// The benchmark's cylinder of size 0, 1, 2: mesh::tet_cylinder(0.01, 0.02, n, layers) with (n, layers) = (12, 8),
+/// (24, 24), (48, 57): 1 089, 11 425 and 103 066 nodes, minimum tet quality 0.29-0.34.
+/// @throws InvalidArgument for another size
+mesh::Mesh benchmark_cylinder(int size);
+
+/// Its model: lloyd-tet springs for E 14 630 Pa, nu 0.25 and lumped masses of 1 000 kg/m^3.
+calibrate::CalibratedModel benchmark_model(int size);
+
 struct DynamicsBenchmarkOptions {
-  std::vector<int> sizes = {0, 1};  ///< 0, 1, 2: the 1 089-, 11 025- and 103 275-node cylinders
+  std::vector<int> sizes = {0, 1};  ///< 0, 1, 2: the 1 089-, 11 425- and 103 066-node cylinders
   int steps = 40;                   ///< timed steps per integrator (after one untimed first step)
   double dt = 1e-3;                 ///< implicit step, s; explicit integrators run at 0.9 x their stability limit
 };
@@ -28,6 +37,9 @@ struct StepTiming {
   double dt = 0.0;  ///< s
   double median_ms = 0.0, p95_ms = 0.0;
   double iterations = 0.0;  ///< solver iterations per step
+  /// Max node distance to implicit Euler converged tightly (Newton to 1e-12) after the same steps, relative to its
+  /// largest displacement; -1 where the integrator solves another problem (explicit steps, quasi-static).
+  double error_vs_converged = -1.0;
 };
 
 struct DynamicsBenchmarkReport {
@@ -38,8 +50,10 @@ struct DynamicsBenchmarkReport {
 };
 
 /// Runs the benchmark: triad, spring forces (median of 30 passes), then every integrator per mesh (implicit-euler
-/// and quasi-static only up to the 11 025-node mesh: their Newton matrices need a fresh factorisation of 310 000
-/// DOFs on the largest one).
+/// and quasi-static only up to the 11 425-node mesh: their Newton matrices need a fresh factorisation of 310 000
+/// DOFs on the largest one). Every timed run is checked after each step (untimed): a run that leaves the
+/// admissible set (an inverted element, a non-finite position) or ends a step above its Newton tolerance is not
+/// reported; a note says which and where.
 /// @throws InvalidArgument on a size outside 0..2 or steps < 1
 DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& options);
 

@@ -142,24 +142,93 @@ Mesh tet_box(double lx, double ly, double lz, int nx, int ny, int nz) {
   return make_mesh(ElementKind::kTet, to_rows(xyz, 3), to_rows(tets, 4), "tet box");
 }
 
+namespace {
+
+// The cross-section of tet_cylinder: an O-grid of the disc of `radius` (a square of m x m cells in the middle, a
+// ring of k cells between it and the circle), each quad split along its shorter diagonal into two
+// counter-clockwise triangles. Nodes: the square row by row, then ring by ring.
+void disc_triangles(double radius, int m, int k, std::vector<double>& xy, std::vector<int>& tri) {
+  const double s = radius * m / (m + 2.0 * k);  // inner half-width: square cells as deep as the ring's at mid-edge
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= m; ++i) xy.insert(xy.end(), {s * (2.0 * i / m - 1.0), s * (2.0 * j / m - 1.0)});
+  auto square = [&](int i, int j) { return i + (m + 1) * j; };
+  // Boundary of the square, counter-clockwise from (-s, -s): position b in [0, 4m).
+  auto boundary = [&](int b) {
+    const int side = b / m, t = b % m;
+    switch (side) {
+      case 0: return square(t, 0);
+      case 1: return square(m, t);
+      case 2: return square(m - t, m);
+      default: return square(0, m - t);
+    }
+  };
+  const int around = 4 * m, first_ring = (m + 1) * (m + 1);
+  auto ring = [&](int b, int j) { return j == 0 ? boundary(b % around) : first_ring + (j - 1) * around + b % around; };
+  for (int j = 1; j <= k; ++j)
+    for (int b = 0; b < around; ++b) {
+      const int q = boundary(b);
+      const double angle = -0.75 * std::numbers::pi + 2.0 * std::numbers::pi * b / around;  // corners at 45 deg
+      const double t = static_cast<double>(j) / k, x = xy[2 * static_cast<size_t>(q)],
+                   y = xy[2 * static_cast<size_t>(q) + 1];
+      xy.insert(xy.end(), {(1.0 - t) * x + t * radius * std::cos(angle), (1.0 - t) * y + t * radius * std::sin(angle)});
+    }
+  auto quad = [&](int a, int b, int c, int d) {  // counter-clockwise
+    auto len2 = [&](int p, int q) {
+      const double dx = xy[2 * static_cast<size_t>(p)] - xy[2 * static_cast<size_t>(q)];
+      const double dy = xy[2 * static_cast<size_t>(p) + 1] - xy[2 * static_cast<size_t>(q) + 1];
+      return dx * dx + dy * dy;
+    };
+    if (len2(a, c) <= len2(b, d))
+      tri.insert(tri.end(), {a, b, c, a, c, d});
+    else
+      tri.insert(tri.end(), {a, b, d, b, c, d});
+  };
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i) quad(square(i, j), square(i + 1, j), square(i + 1, j + 1), square(i, j + 1));
+  for (int j = 0; j < k; ++j)
+    for (int b = 0; b < around; ++b) quad(ring(b, j), ring(b, j + 1), ring(b + 1, j + 1), ring(b + 1, j));
+}
+
+// The three tets of the prism over triangle (a, b, c) with top (d, e, f): every quadrilateral face is cut along
+// the diagonal through its smallest node index, which makes neighbouring prisms conform and always leaves a
+// split into three tets (Dompierre et al. 1999, "How to subdivide pyramids, prisms and hexahedra into
+// tetrahedra"). Each tet is oriented positively by the caller.
+void prism_tets(std::array<int, 6> v, std::vector<int>& tets) {
+  // Rotate / flip so that the smallest index is v[0] (bottom a), keeping (a, b, c) / (d, e, f) a prism.
+  static constexpr int kSym[6][6] = {{0, 1, 2, 3, 4, 5}, {1, 2, 0, 4, 5, 3}, {2, 0, 1, 5, 3, 4},
+                                     {3, 5, 4, 0, 2, 1}, {4, 3, 5, 1, 0, 2}, {5, 4, 3, 2, 1, 0}};
+  const int lowest = static_cast<int>(std::min_element(v.begin(), v.end()) - v.begin());
+  std::array<int, 6> p{};
+  for (int q = 0; q < 6; ++q) p[static_cast<size_t>(q)] = v[static_cast<size_t>(kSym[lowest][q])];
+  const int a = p[0], b = p[1], c = p[2], d = p[3], e = p[4], f = p[5];
+  if (std::min(b, f) < std::min(c, e))
+    tets.insert(tets.end(), {a, b, c, f, a, b, f, e, a, e, f, d});
+  else
+    tets.insert(tets.end(), {a, b, c, e, a, e, c, f, a, e, f, d});
+}
+
+}  // namespace
+
 Mesh tet_cylinder(double radius, double height, int n, int layers) {
   require(n >= 2 && n % 2 == 0 && layers >= 1 && radius > 0.0 && height > 0.0,
           "tet_cylinder: needs an even n >= 2, layers >= 1 and a positive size");
-  Mesh m = tet_box(2.0, 2.0, height, n, n, layers);
-  for (int i = 0; i < m.node_count(); ++i) {
-    const double a = m.nodes(i, 0) - 1.0, b = m.nodes(i, 1) - 1.0;  // in [-1, 1]^2
-    double r = 0.0, phi = 0.0;
-    if (std::abs(a) > std::abs(b)) {
-      r = a;
-      phi = M_PI / 4.0 * (b / a);
-    } else if (b != 0.0) {
-      r = b;
-      phi = M_PI / 2.0 - M_PI / 4.0 * (a / b);
+  std::vector<double> xy;
+  std::vector<int> tri;
+  disc_triangles(radius, n / 2, std::max(1, n / 4), xy, tri);
+  const int per_level = static_cast<int>(xy.size() / 2);
+  std::vector<double> xyz;
+  for (int l = 0; l <= layers; ++l)
+    for (int i = 0; i < per_level; ++i)
+      xyz.insert(xyz.end(), {xy[2 * static_cast<size_t>(i)], xy[2 * static_cast<size_t>(i) + 1], height * l / layers});
+  std::vector<int> tets;
+  for (int l = 0; l < layers; ++l)
+    for (size_t t = 0; t < tri.size(); t += 3) {
+      const int lo = l * per_level, hi = (l + 1) * per_level;
+      prism_tets({lo + tri[t], lo + tri[t + 1], lo + tri[t + 2], hi + tri[t], hi + tri[t + 1], hi + tri[t + 2]}, tets);
     }
-    m.nodes(i, 0) = radius * r * std::cos(phi);
-    m.nodes(i, 1) = radius * r * std::sin(phi);
-  }
-  m.source = "tet cylinder";
+  Mesh m = make_mesh(ElementKind::kTet, to_rows(xyz, 3), to_rows(tets, 4), "tet cylinder");
+  for (int e = 0; e < m.element_count(); ++e)  // orient every tet positively
+    if (element_measure(m, e) < 0.0) std::swap(m.elements(e, 2), m.elements(e, 3));
   return m;
 }
 

@@ -35,10 +35,13 @@ Mesh rectangle_triangles(double width, double height, int nx, int ny, Diagonal d
 /// @pre n* >= 1; l* > 0 (m)
 Mesh tet_box(double lx, double ly, double lz, int nx, int ny, int nz);
 
-/// Cylinder of `radius` and `height` (m), axis along z from z = 0: a tet_box of n x n x layers cells over
-/// the square [-1, 1]^2 mapped onto the disc by the area-preserving concentric map (Shirley and Chiu 1997),
-/// so every cell keeps its volume. Deterministic; (n+1)^2 (layers+1) nodes, 6 n^2 layers tets.
-/// n = 10, 20, 44 with layers = 8, 24, 50 give about 1 000, 11 000 and 103 000 nodes (issue 4's benchmarks).
+/// Cylinder of `radius` and `height` (m), axis along z from z = 0, without slivers: the cross-section is an
+/// O-grid (a square of n/2 x n/2 cells in the middle, a ring of max(1, n/4) cells out to the circle, corners of
+/// the square at 45 degrees, circle nodes at equal angles), each quad split along its shorter diagonal, extruded
+/// in `layers` equal layers; each prism is cut into three tets along the diagonals through the smallest node
+/// index of its faces (conforming; Dompierre et al. 1999). Deterministic. (The earlier square-to-disc map turned
+/// the square's corner cells into flat tets of quality 0.03 that spring models invert under gravity.)
+/// Nodes ((n/2 + 1)^2 + 2 n max(1, n/4)) (layers + 1), tets 6 (n^2/4 + 2 n max(1, n/4)) layers.
 /// @pre n >= 2 even, layers >= 1, radius, height > 0
 Mesh tet_cylinder(double radius, double height, int n, int layers);
 

@@ -13,6 +13,7 @@ class OrientationGuard final : public TermBlock {
   /// @throws InvalidArgument for a surface mesh (it has no orientation to keep)
   explicit OrientationGuard(const mesh::Mesh& mesh);
   std::string_view name() const override { return "orientation-guard"; }
+  bool has_forces() const override { return false; }
   /// 0 J, or +infinity where an element is inverted (signed area / volume <= 0; each quad as its 4 corner triangles).
   double energy(const Eigen::Ref<const VecX>& x) const override;
   void add_gradient(const Eigen::Ref<const VecX>&, Eigen::Ref<VecX>) const override {}

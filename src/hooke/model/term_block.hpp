@@ -1,10 +1,26 @@
 #pragma once
 /// One batch of energy terms of a model (all FEM elements, all springs, ...), evaluated in one call.
+#include <array>
 #include <hooke/core/types.hpp>
 #include <hooke/model/hessian_scatter.hpp>
 #include <string_view>
+#include <vector>
 
 namespace hooke::model {
+
+/// What a block of central springs, E = sum_s k_s/2 (|x_i - x_j| - l0_s)^2, offers solvers that exploit that form
+/// (the local/global integrator of Liu et al. 2013). A block declares it through TermBlock::central_springs();
+/// solvers never recognise a block by its type or name.
+class CentralSprings {
+ public:
+  virtual ~CentralSprings() = default;
+  /// Node pairs (i, j) of the springs.
+  virtual const std::vector<std::array<int, 2>>& pairs() const = 0;
+  /// k per spring, N/m.
+  virtual const VecX& stiffness() const = 0;
+  /// Local step: adds k l0 (x_i - x_j)/|x_i - x_j| at node i and its negative at node j, N, to `out` (size of x).
+  virtual void add_rest_directions(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> out) const = 0;
+};
 
 /// Interface of a term block. Positions x are flat and node-major: x[dim * node + axis], m.
 /// One virtual call per block and evaluation, never per element. energy, add_gradient and add_hessian_values
@@ -21,6 +37,10 @@ class TermBlock {
   /// False when add_hessian_values is an approximation (a sparse stand-in for a dense coupling, or the symmetric
   /// part of a non-conservative block's Jacobian): Newton solvers then refine their steps (default true).
   virtual bool exact_hessian() const { return conservative(); }
+  /// The block as central springs, or null when it is not one (default).
+  virtual const CentralSprings* central_springs() const { return nullptr; }
+  /// False for a block that only marks states inadmissible (infinite energy) and adds no force (default true).
+  virtual bool has_forces() const { return true; }
   /// Stored elastic energy at x, J. +infinity where x is outside the block's domain (an inverted element).
   virtual double energy(const Eigen::Ref<const VecX>& x) const = 0;
   /// Adds dE/dx at x (N) to `gradient` (same size as x).

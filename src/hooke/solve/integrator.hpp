@@ -17,8 +17,15 @@ enum class Integrator {
                      ///< Systems": the same incremental potential for spring-only models, solved by alternating
                      ///< spring directions (local) and one prefactored linear solve (global). Stable for any dt;
                      ///< a fixed iteration count trades accuracy for speed.
-  kQuasiStatic       ///< "quasi-static": each step relaxes to the static equilibrium under the current loads
+  kQuasiStatic,      ///< "quasi-static": each step relaxes to the static equilibrium under the current loads
                      ///< (Newton from the previous state); velocities are zero.
+  kImplicitEulerLinearised  ///< "implicit-euler-linearised": Baraff & Witkin 1998, "Large Steps in Cloth
+                            ///< Simulation": backward Euler linearised about x_n, one linear solve
+                            ///< (M + dt D + dt^2 K(x_n)) dv = dt (f(x_n) - D v_n - dt K(x_n) v_n) per step, i.e. one
+                            ///< Newton iteration of implicit-euler from x_n without line search. Stable for stiff
+                            ///< springs at large dt, one factorisation per step; the step is not iterated to
+                            ///< convergence (StepReport::residual says how far it is; converged is true by
+                            ///< definition).
 };
 
 Integrator integrator_from_name(std::string_view name);  ///< @throws InvalidArgument listing the names

@@ -25,7 +25,12 @@ struct SimulatorOptions {
   /// local-global with chebyshev: false = plain Jacobi sweeps (for comparison; may be unstable for odd iteration
   /// counts, docs/simulation.md)
   bool chebyshev_acceleration = true;
-  bool project_psd = true;  ///< project element Hessians to PSD in Newton steps
+  /// Newton steps: true projects every element Hessian to PSD; false (default) uses the exact Hessian (quadratic
+  /// convergence) and the projected one only where the exact Newton matrix is not positive definite
+  bool project_psd = false;
+  /// cg: stop the conjugate gradients of a Newton iteration when |residual| <= cg_tolerance x |gradient| (an
+  /// inexact Newton step; the Newton loop still converges to newton_tolerance), default 1e-6
+  double cg_tolerance = 1e-6;
   /// implicit-euler, quasi-static with Cholesky: reuse the last factorisation (modified Newton) while it reduces
   /// the residual fourfold per iteration; refactorise otherwise
   bool reuse_factorization = true;
@@ -43,6 +48,7 @@ struct Probe {
 /// What one step did.
 struct StepReport {
   int iterations = 0;             ///< Newton or local/global iterations (0 for explicit steps)
+  int linear_iterations = 0;      ///< conjugate-gradient iterations over the step's Newton iterations (cg only)
   double residual = 0.0;          ///< |gradient of the step's objective| on the free DOFs at the end, N (0 explicit)
   bool converged = true;          ///< false when Newton hit max_newton_iterations above tolerance
   bool beyond_stable_dt = false;  ///< explicit only: dt exceeded stable_time_step()

@@ -22,7 +22,7 @@ MatX spring_energy_hessian(const Eigen::Ref<const VecX>& pi, const Eigen::Ref<co
                            double rest_length);
 
 /// All springs of a model, evaluated in one call.
-class SpringBlock final : public model::TermBlock {
+class SpringBlock final : public model::TermBlock, public model::CentralSprings {
  public:
   /// @param dim           2 or 3
   /// @param pairs         node pairs (i, j), i != j
@@ -32,6 +32,7 @@ class SpringBlock final : public model::TermBlock {
   SpringBlock(int dim, std::vector<std::array<int, 2>> pairs, VecX stiffness, VecX rest_length);
 
   std::string_view name() const override { return "springs"; }
+  const model::CentralSprings* central_springs() const override { return this; }
   double energy(const Eigen::Ref<const VecX>& x) const override;
   void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const override;
   RowMatXi element_nodes() const override;
@@ -43,11 +44,11 @@ class SpringBlock final : public model::TermBlock {
   /// Local step of Liu et al. 2013 (Fast Simulation of Mass-Spring Systems, Sec. 3): adds J d, i.e.
   /// k l0 (x_i - x_j)/|x_i - x_j| at node i and its negative at node j, N, to `out` (size of x). A spring of
   /// zero length adds nothing.
-  void add_rest_directions(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> out) const;
+  void add_rest_directions(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> out) const override;
 
   int dim() const { return m_dim; }
-  const std::vector<std::array<int, 2>>& pairs() const { return m_pairs; }
-  const VecX& stiffness() const { return m_stiffness; }
+  const std::vector<std::array<int, 2>>& pairs() const override { return m_pairs; }
+  const VecX& stiffness() const override { return m_stiffness; }
   const VecX& rest_length() const { return m_rest_length; }
 
  private:
