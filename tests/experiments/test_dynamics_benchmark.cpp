@@ -8,6 +8,7 @@
 #include <hooke/experiments/simulation.hpp>
 #include <hooke/mesh/validate.hpp>
 #include <iostream>
+#include <string>
 
 namespace hooke::experiments {
 namespace {
@@ -67,7 +68,15 @@ INSTANTIATE_TEST_SUITE_P(Integrators, BenchmarkCylinderUnderGravity,
                                          Case{solve::Integrator::kImplicitEulerLinearised, solve::GlobalSolve::kDirect,
                                               300, solve::NewtonLinearSolver::kConjugateGradient},
                                          Case{solve::Integrator::kImplicitEuler, solve::GlobalSolve::kDirect, 20},
-                                         Case{solve::Integrator::kQuasiStatic, solve::GlobalSolve::kDirect, 20}));
+                                         Case{solve::Integrator::kQuasiStatic, solve::GlobalSolve::kDirect, 20}),
+    [](const testing::TestParamInfo<Case>& p) {
+      std::string name(solve::integrator_name(p.param.integrator));
+      if (p.param.global_solve == solve::GlobalSolve::kChebyshev) name += "_chebyshev";
+      if (p.param.linear_solver == solve::NewtonLinearSolver::kConjugateGradient) name += "_cg";
+      for (char& c : name)
+        if (c == '-') c = '_';
+      return name;
+    });
 
 }  // namespace
 }  // namespace hooke::experiments

@@ -2,6 +2,8 @@
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
+#include <hooke/model/hessian_assembly.hpp>
+#include <memory>
 #include <hooke/solve/detail/reduce.hpp>
 #include <hooke/solve/stability.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
@@ -29,6 +31,7 @@ struct NewtonState {
   SparseCholesky chol;
   SparseMatrix identity;
   double size = 1.0;  // extent of the body, m
+  std::unique_ptr<model::HessianAssembly> assembly = nullptr;  // the Hessian's pattern, built once, refilled per iteration
 
   // Free-DOF residual r = dE/dx - lambda f and the force scale for the convergence test.
   VecX residual(const VecX& x, double lambda, double& scale) {
@@ -42,7 +45,9 @@ struct NewtonState {
 
   SparseMatrix tangent(const VecX& x) {
     const auto t0 = Clock::now();
-    SparseMatrix h = map.restrict(problem.model->hessian(x, options.project_psd));
+    if (!assembly) assembly = std::make_unique<model::HessianAssembly>(*problem.model);
+    assembly->assemble(x, options.project_psd);
+    SparseMatrix h = map.restrict(assembly->matrix());
     report.assembly_seconds += seconds_since(t0);
     return h;
   }
