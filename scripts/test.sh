@@ -17,5 +17,6 @@ bash scripts/check_install.sh build/ci   # examples/ against the installed packa
 if [ "${1:-}" != "--no-sanitizers" ]; then
   cmake --preset asan > /dev/null
   cmake --build --preset asan -j "$jobs"
-  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs" -E "cli_smoke|reproduce_lloyd2007"
+  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs" \
+    -E "cli_smoke|cli_calibrate|reproduce_lloyd2007|BenchmarkCylinderUnderGravity"
 fi
