@@ -6,6 +6,7 @@
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/dynamics_benchmark.hpp>
 #include <hooke/experiments/load_case.hpp>
+#include <hooke/experiments/simulation.hpp>
 #include <hooke/mesh/generators.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <hooke/springs/spring_block.hpp>
@@ -17,11 +18,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-double quantile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
-  return v[static_cast<size_t>(q * static_cast<double>(v.size() - 1) + 0.5)];
-}
 
 // Best of 5 passes of a[i] = b[i] + 3 c[i] over 3 x 16 M doubles on all threads (STREAM's byte count).
 double triad_bytes_per_second() {
