@@ -152,7 +152,7 @@ void BM_PeerAccuracy(benchmark::State& state) {
   // one it stalls (load factor 0.37, residual near 1e-5 N after 420 iterations: the spring-only model's soft
   // sliver-tet modes), so the reference is then a damped Chebyshev local/global run continued until the residual
   // passes the same test.
-  solve::NewtonOptions newton;
+  solve::StaticOptions newton;
   newton.check_stability = false;
   newton.initial_load_steps = 1;
   newton.min_load_step = 0.5;  // one attempt

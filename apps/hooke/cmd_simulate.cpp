@@ -45,7 +45,7 @@ void print_summary(const SimulateCli& o, const calibrate::CalibratedModel& model
 int run_simulate(SimulateCli o) {
   const calibrate::CalibratedModel model = load_model(o.in);
   o.run.simulator.integrator = solve::integrator_from_name(o.integrator);
-  o.run.simulator.linear_solver = solve::newton_linear_solver_from_name(o.linear_solver);
+  o.run.simulator.newton.linear_solver = solve::newton_linear_solver_from_name(o.linear_solver);
   o.run.simulator.global_solve = solve::global_solve_from_name(o.global_solve);
   o.run.clamp_bottom = !o.free_body;
   o.run.reorder = !o.no_reorder;

@@ -41,7 +41,7 @@ TEST_P(BenchmarkCylinderUnderGravity, StaysAdmissible) {
   SimulationOptions o;
   o.simulator.integrator = GetParam().integrator;
   o.simulator.global_solve = GetParam().global_solve;
-  o.simulator.linear_solver = GetParam().linear_solver;
+  o.simulator.newton.linear_solver = GetParam().linear_solver;
   o.steps = GetParam().steps;
   o.every = 1;  // simulate() checks every frame: finite, no inverted element
   o.gravity = true;

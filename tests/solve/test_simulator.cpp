@@ -35,8 +35,8 @@ Simulator oscillator(Integrator integrator, double k, double mass, double amplit
   SimulatorOptions o;
   o.integrator = integrator;
   o.local_global_iterations = 200;
-  o.newton_tolerance = 1e-13;
-  o.project_psd = project_psd;
+  o.newton.tolerance = 1e-13;
+  o.newton.project_psd = project_psd;
   Simulator s(p, {VecX::Constant(4, mass), VecX(), 0.0, 0.0}, o);
   VecX x = rest;
   x(2) += amplitude;
@@ -204,7 +204,7 @@ TEST(Simulator, ImplicitAndQuasiStaticSettleToTheStaticEquilibrium) {
             variant)];
     SimulatorOptions o;
     o.integrator = integrator;
-    if (variant == 3) o.linear_solver = NewtonLinearSolver::kConjugateGradient;
+    if (variant == 3) o.newton.linear_solver = NewtonLinearSolver::kConjugateGradient;
     if (variant == 4) o.global_solve = GlobalSolve::kChebyshev;
     o.local_global_iterations = 20;
     Simulator s(p, {box.mass, g, 20.0, 0.0}, o);
@@ -367,7 +367,7 @@ TEST(Simulator, ProbePushAndDriveRenderTheSameForce) {
   ASSERT_GE(tip, 0);
   SimulatorOptions o;
   o.integrator = Integrator::kQuasiStatic;
-  o.newton_tolerance = 1e-13;
+  o.newton.tolerance = 1e-13;
   Simulator push(p, {box.mass, VecX(), 0.0, 0.0}, o);
   const Probe probe{{tip}, false, VecX(), Vec3(0.0, 2e-4, 5e-4)};
   push.set_probe(probe);

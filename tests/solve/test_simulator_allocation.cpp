@@ -102,7 +102,7 @@ TEST_P(StepAllocation, NoHeapAllocationAfterTheFirstStep) {
       c.integrator == Integrator::kSymplecticEuler || c.integrator == Integrator::kVelocityVerlet;
   SimulatorOptions options;
   options.integrator = c.integrator;
-  options.linear_solver = c.linear_solver;
+  options.newton.linear_solver = c.linear_solver;
   if (c.chebyshev) options.global_solve = GlobalSolve::kChebyshev;
   // Local/global's Kronecker form needs no stiffness damping; the others get both Rayleigh terms.
   Simulator sim(
@@ -157,7 +157,7 @@ TEST(SurfaceStepAllocation, NoHeapAllocationAfterTheFirstStep) {
     gravity(2) = -9.81;
     SimulatorOptions options;
     options.integrator = integrator;
-    options.linear_solver = NewtonLinearSolver::kConjugateGradient;
+    options.newton.linear_solver = NewtonLinearSolver::kConjugateGradient;
     Simulator sim(model::make_problem(s.model), {s.masses, gravity, 2.0, 0.0}, options);
     Probe probe{{0}, false, VecX(), Vec3(0.0, 0.0, 0.0)};
     const double dt = integrator == Integrator::kSymplecticEuler ? 0.5 * sim.stable_time_step() : 1e-3;

@@ -58,7 +58,7 @@ TEST(StaticEquilibrium, InitialGuessIsUsedWhenItConverges) {
   const model::Problem p = loaded(column3d(), Law::kNeoHookean, LoadKind::kStretch, 400.0);
   const auto plain = static_equilibrium(p);
   require_converged(plain.report);
-  NewtonOptions o;
+  StaticOptions o;
   o.start = plain.positions + VecX::Constant(plain.positions.size(), 1e-7);
   const auto warm = static_equilibrium(p, o);
   require_converged(warm.report);
@@ -129,8 +129,8 @@ TEST(StaticEquilibrium, UnheldBodyIsReportedSingular) {
 }
 
 TEST(StaticEquilibrium, ReportsNonConvergence) {
-  NewtonOptions o;
-  o.max_iterations = 1;
+  StaticOptions o;
+  o.newton.max_iterations = 1;
   o.initial_load_steps = 1;
   o.min_load_step = 0.3;
   const auto r = static_equilibrium(loaded(column3d(), Law::kNeoHookean, LoadKind::kStretch, 3000.0), o);

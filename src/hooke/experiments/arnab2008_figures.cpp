@@ -24,9 +24,9 @@ VecX pushed(const calibrate::SurfaceModel& s, int node, double force) {
   p.external_force = VecX::Zero(s.model->dof_count());
   p.external_force(3 * node + 2) = -force;
   if (s.volume) s.volume->set_interaction({s.mesh.nodes.row(node).transpose(), Vec3(0, 0, -1), 2.0 * kRadius});
-  solve::NewtonOptions newton;
-  newton.max_iterations = 100;
-  const solve::StaticResult r = solve::static_equilibrium(p, newton);
+  solve::StaticOptions statics;
+  statics.newton.max_iterations = 100;
+  const solve::StaticResult r = solve::static_equilibrium(p, statics);
   solve::require_converged(r.report);
   return r.positions;
 }
@@ -151,9 +151,9 @@ ShearComparison arnab2008_fig12(double nu, Figure* figure) {
   model::fix_nodes(pf, bottom_tets);
   const solve::StaticResult rf = solve::linear_static(pf);
   solve::require_converged(rf.report);
-  solve::NewtonOptions newton;
-  newton.max_iterations = 100;
-  const solve::StaticResult rs = solve::static_equilibrium(ps, newton);
+  solve::StaticOptions statics;
+  statics.newton.max_iterations = 100;
+  const solve::StaticResult rs = solve::static_equilibrium(ps, statics);
   solve::require_converged(rs.report);
   double top_sum = 0.0;
   int top_count = 0;
@@ -193,9 +193,9 @@ std::vector<GravityRow> arnab2008_fig9(double nu, Figure* figure) {
     model::Problem p = model::make_problem(s.model);
     p.external_force = VecX::Zero(s.model->dof_count());
     for (int i = 0; i < s.mesh.node_count(); ++i) p.external_force(3 * i + 2) = -9.81 * s.masses(3 * i);
-    solve::NewtonOptions newton;
-    newton.max_iterations = 100;
-    const solve::StaticResult r = solve::static_equilibrium(p, newton);
+    solve::StaticOptions statics;
+    statics.newton.max_iterations = 100;
+    const solve::StaticResult r = solve::static_equilibrium(p, statics);
     solve::require_converged(r.report);
     const int n = s.mesh.node_count();
     VecX sag(n);
@@ -224,9 +224,9 @@ std::vector<WeightsRow> arnab2008_fig11(double nu, Figure* figure) {
     p.external_force = VecX::Zero(s.model->dof_count());
     p.external_force(2) = -0.005;  // node 0: the top pole
     if (run_time) s.volume->set_interaction({s.mesh.nodes.row(0).transpose(), Vec3(0, 0, -1), 2.0 * kRadius});
-    solve::NewtonOptions newton;
-    newton.max_iterations = 100;
-    const solve::StaticResult r = solve::static_equilibrium(p, newton);
+    solve::StaticOptions statics;
+    statics.newton.max_iterations = 100;
+    const solve::StaticResult r = solve::static_equilibrium(p, statics);
     solve::require_converged(r.report);
     const VecX u = r.positions - s.model->rest_positions();
     WeightsRow row;

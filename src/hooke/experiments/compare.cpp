@@ -137,9 +137,9 @@ Comparison compare_calibrated(const calibrate::CalibratedModel& model, const Com
     for (int i : c.load.top_nodes) centre += surface.nodes.row(i).transpose() / c.load.top_nodes.size();
     built.volume_penalty->set_interaction({centre, Vec3(c.load.direction), mesh::bounding_box_diagonal(surface)});
   }
-  solve::NewtonOptions newton;
-  newton.max_iterations = 100;
-  const solve::StaticResult msm = solve::static_equilibrium(problem, newton);
+  solve::StaticOptions statics;
+  statics.newton.max_iterations = 100;
+  const solve::StaticResult msm = solve::static_equilibrium(problem, statics);
   c.fem_mesh_positions = fem.positions;
   c.fem_mesh = tets;
   c.fem_positions = fem.positions.segment(3 * offset, 3 * n);

@@ -94,8 +94,8 @@ std::string inadmissible(const solve::Simulator& sim, const solve::StepReport& r
 VecX converged_reference(const model::Problem& problem, const solve::Dynamics& dynamics, double dt, int steps) {
   solve::SimulatorOptions o;
   o.integrator = solve::Integrator::kImplicitEuler;
-  o.newton_tolerance = 1e-12;
-  o.max_newton_iterations = 200;
+  o.newton.tolerance = 1e-12;
+  o.newton.max_iterations = 200;
   solve::Simulator sim(problem, dynamics, o);
   for (int k = 0; k <= steps; ++k) sim.step(dt);
   return sim.positions();
@@ -159,7 +159,7 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
       solve::SimulatorOptions o;
       o.integrator = run.integrator;
       o.global_solve = run.global_solve;
-      o.linear_solver = run.linear_solver;
+      o.newton.linear_solver = run.linear_solver;
       solve::Simulator sim(problem, dynamics, o);
       const double dt = is_explicit(run.integrator) ? 0.9 * sim.stable_time_step() : options.dt;
       std::string why = inadmissible(sim, sim.step(dt), 1);

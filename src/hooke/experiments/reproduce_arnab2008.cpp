@@ -41,9 +41,9 @@ Extraction extract(int n, double e, double nu, double a, double strain_load, cal
   const double sigma = strain_load * e;
   p.external_force = detail::top_face_load(s.mesh, a, Vec3(0, 0, -sigma));
   if (s.volume) s.volume->set_interaction({Vec3(a / 2, a / 2, a), Vec3(0, 0, -1), 2.0 * a});
-  solve::NewtonOptions newton;
-  newton.max_iterations = 100;
-  const solve::StaticResult r = solve::static_equilibrium(p, newton);
+  solve::StaticOptions statics;
+  statics.newton.max_iterations = 100;
+  const solve::StaticResult r = solve::static_equilibrium(p, statics);
   solve::require_converged(r.report);
   double work = 0.0, load = 0.0;
   for (Eigen::Index i = 0; i < p.external_force.size(); ++i)

@@ -15,25 +15,27 @@ struct Dynamics {
   double stiffness_damping = 0.0;  ///< Rayleigh beta, s: damping force -beta K0 v, K0 = the Hessian at rest
 };
 
+/// Newton's options of the implicit time steps (implicit-euler, implicit-euler-linearised, quasi-static): the
+/// NewtonOptions defaults except 60 iterations per step, factorisation reuse across iterations and steps (modified
+/// Newton) on, and no GMRES refinement (it allocates; the real-time loop must not).
+inline NewtonOptions time_step_newton_options() {
+  NewtonOptions o;
+  o.max_iterations = 60;
+  o.reuse_factorization = true;
+  o.refine_approximate_steps = false;
+  return o;
+}
+
 struct SimulatorOptions {
-  Integrator integrator = Integrator::kImplicitEuler;
-  NewtonLinearSolver linear_solver = NewtonLinearSolver::kCholesky;
-  int max_newton_iterations = 60;                   ///< implicit-euler, quasi-static: per step
-  double newton_tolerance = 1e-9;                   ///< stop when |grad| <= tolerance x the step's force scale
+  Integrator integrator = Integrator::kImplicitEuler;  ///< default implicit-euler
+  /// implicit-euler, implicit-euler-linearised, quasi-static: the Newton core's options (the linearised step uses
+  /// linear_solver, backend, project_psd and cg_tolerance), default time_step_newton_options()
+  NewtonOptions newton = time_step_newton_options();
   int local_global_iterations = 10;                 ///< local-global: iterations per step (Liu et al. use about 10)
   GlobalSolve global_solve = GlobalSolve::kDirect;  ///< local-global: the global step's linear solver
   /// local-global with chebyshev: false = plain Jacobi sweeps (for comparison; may be unstable for odd iteration
   /// counts, docs/simulation.md)
   bool chebyshev_acceleration = true;
-  /// Newton steps: true projects every element Hessian to PSD; false (default) uses the exact Hessian (quadratic
-  /// convergence) and the projected one only where the exact Newton matrix is not positive definite
-  bool project_psd = false;
-  /// cg: stop the conjugate gradients of a Newton iteration when |residual| <= cg_tolerance x |gradient| (an
-  /// inexact Newton step; the Newton loop still converges to newton_tolerance), default 1e-6
-  double cg_tolerance = 1e-6;
-  /// implicit-euler, quasi-static with Cholesky: reuse the last factorisation (modified Newton) while it reduces
-  /// the residual fourfold per iteration; refactorise otherwise
-  bool reuse_factorization = true;
 };
 
 /// A haptic or mouse probe: it grabs nodes and either drives them (as a stiff haptic device or a mouse drag
@@ -50,7 +52,7 @@ struct StepReport {
   int iterations = 0;             ///< Newton or local/global iterations (0 for explicit steps)
   int linear_iterations = 0;      ///< conjugate-gradient iterations over the step's Newton iterations (cg only)
   double residual = 0.0;          ///< |gradient of the step's objective| on the free DOFs at the end, N (0 explicit)
-  bool converged = true;          ///< false when Newton hit max_newton_iterations above tolerance
+  bool converged = true;          ///< false when Newton ended above its tolerance (iteration limit, no descent)
   bool beyond_stable_dt = false;  ///< explicit only: dt exceeded stable_time_step()
   /// The force the body exerts on the probe at the end of the step, N (dim; zero without a probe): what a
   /// haptic device renders. Driven nodes: minus the force needed to hold them, sum over them of

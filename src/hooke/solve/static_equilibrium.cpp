@@ -3,8 +3,8 @@
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
 #include <hooke/model/hessian_assembly.hpp>
-#include <memory>
 #include <hooke/solve/detail/reduce.hpp>
+#include <hooke/solve/detail/sparse_ops.hpp>
 #include <hooke/solve/stability.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
 #include <sstream>
@@ -22,164 +22,94 @@ std::string format_double(double v) {
   return s.str();
 }
 
-// Newton's method at one load factor, from x (updated in place). Returns true when converged.
-struct NewtonState {
-  const model::Problem& problem;
-  const detail::FreeMap& map;
-  const NewtonOptions& options;
-  SolveReport& report;
-  SparseCholesky chol;
-  SparseMatrix identity;
-  double size = 1.0;  // extent of the body, m
-  std::unique_ptr<model::HessianAssembly> assembly = nullptr;  // the Hessian's pattern, built once, refilled per iteration
-
-  // Free-DOF residual r = dE/dx - lambda f and the force scale for the convergence test.
-  VecX residual(const VecX& x, double lambda, double& scale) {
-    const auto t0 = Clock::now();
-    const VecX g = problem.model->gradient(x);
-    report.assembly_seconds += seconds_since(t0);
-    const VecX full = g - lambda * problem.external_force;
-    scale = std::max((lambda * problem.external_force).norm(), g.norm());
-    return map.restrict(full);
+// Pi(x) = E(x) - lambda f.(x - X) over the free DOFs of a problem, for NewtonSolver. DOFs that carry no stiffness
+// (nodes in no element) are held with the fixed ones.
+class StaticObjective final : public NewtonObjective {
+ public:
+  StaticObjective(const model::Problem& problem, const detail::FreeMap& map, SolveReport& report)
+      : m_problem(problem), m_assembly(*problem.model), m_fixed(problem.model->dof_count(), 1), m_report(report) {
+    for (const int i : map.free) m_fixed[static_cast<size_t>(i)] = 0;
+    const VecX& rest = problem.model->rest_positions();
+    m_size = std::max(rest.maxCoeff() - rest.minCoeff(), 1e-300);
+    m_model_gradient.setZero(rest.size());
   }
+  void set_load_factor(double lambda) { m_lambda = lambda; }
 
-  SparseMatrix tangent(const VecX& x) {
+  bool conservative() const override { return m_problem.model->conservative(); }
+  bool exact_hessian() const override { return m_problem.model->exact_hessian(); }
+  const std::vector<char>& fixed() const override { return m_fixed; }
+  int dim() const override { return m_problem.model->dim(); }
+  double size() const override { return m_size; }
+  double value(const VecX& z) override { return model::potential_energy(m_problem, z, m_lambda); }
+  // The convergence test's scale is max(|lambda f|, |dE/dx|) with the internal force over all DOFs: the reactions
+  // count where the body is held by prescribed displacements alone.
+  void gradient(const VecX& z, VecX& out) override {
     const auto t0 = Clock::now();
-    if (!assembly) assembly = std::make_unique<model::HessianAssembly>(*problem.model);
-    assembly->assemble(x, options.project_psd);
-    SparseMatrix h = map.restrict(assembly->matrix());
-    report.assembly_seconds += seconds_since(t0);
+    m_problem.model->gradient(z, m_model_gradient);
+    m_report.assembly_seconds += seconds_since(t0);
+    out = m_model_gradient - m_lambda * m_problem.external_force;
+    m_scale = std::max((m_lambda * m_problem.external_force).norm(), m_model_gradient.norm());
+    for (size_t i = 0; i < m_fixed.size(); ++i)
+      if (m_fixed[i]) out(static_cast<Eigen::Index>(i)) = 0.0;
+  }
+  double force_scale() const override { return m_scale; }
+  SparseMatrix& newton_matrix(const VecX& z, bool project) override {
+    const auto t0 = Clock::now();
+    m_assembly.assemble(z, project);
+    detail::constrain(m_assembly.matrix(), m_fixed, 1);
+    m_report.assembly_seconds += seconds_since(t0);
+    return m_assembly.matrix();
+  }
+  const std::vector<int>& diagonal() const override { return m_assembly.diagonal(); }
+
+  // The exact tangent restricted to the free DOFs (for the stability test and the smallest eigenvalue).
+  SparseMatrix free_tangent(const VecX& z, const detail::FreeMap& map) {
+    const auto t0 = Clock::now();
+    m_assembly.assemble(z, false);
+    SparseMatrix h = map.restrict(m_assembly.matrix());
+    m_report.assembly_seconds += seconds_since(t0);
     return h;
   }
 
-  bool factorize(const SparseMatrix& a) {
-    const auto t0 = Clock::now();
-    const bool ok = chol.factorize(a);
-    report.factorization_seconds += seconds_since(t0);
-    return ok;
-  }
+ private:
+  const model::Problem& m_problem;
+  model::HessianAssembly m_assembly;  // the Hessian's pattern, built once for the whole solve
+  std::vector<char> m_fixed;
+  SolveReport& m_report;
+  double m_size = 1.0, m_lambda = 1.0, m_scale = 0.0;
+  VecX m_model_gradient;
+};
+
+// Newton at one load factor from x (updated in place), and the stability test, over one objective.
+struct LoadStepper {
+  StaticObjective& objective;
+  const detail::FreeMap& map;
+  SolveReport& report;
+  NewtonSolver newton;
+  SparseCholesky stability_factor;
 
   bool solve_step(VecX& x, double lambda) {
-    for (int it = 0; it < options.max_iterations; ++it) {
-      double scale = 0.0;
-      const VecX r = residual(x, lambda, scale);
-      const double rnorm = r.norm();
-      report.residual_history.push_back(rnorm);
-      report.residual = rnorm;
-      if (!std::isfinite(rnorm)) return false;
-      if (rnorm <= options.tolerance * std::max(scale, 1e-300)) return true;
-      ++report.iterations;
-      SparseMatrix h = tangent(x);
-      bool ok = factorize(h);
-      // Indefinite tangent (compressed springs, a buckling body): Levenberg shift until positive definite.
-      double tau = 1e-8 * h.diagonal().cwiseAbs().maxCoeff();
-      for (int k = 0; !ok && k < 30; ++k, tau *= 10.0) ok = factorize(SparseMatrix(h + tau * identity));
-      if (!ok) return false;
-      VecX d = -chol.solve(r);
-      if (!problem.model->exact_hessian()) refine_step(x, lambda, r, d);
-      double slope = r.dot(d);
-      if (!(slope < 0.0)) {
-        d = -r;
-        slope = -r.squaredNorm();
-      }
-      // A Newton step below the round-off scale of the positions: converged (the force test alone cannot tell
-      // at tiny loads, where the residual is round-off noise).
-      if (d.cwiseAbs().maxCoeff() <= options.step_tolerance * size) {
-        for (int i = 0; i < map.size(); ++i) x(map.free[static_cast<size_t>(i)]) += d(i);
-        return true;
-      }
-      // Backtracking line search on the total potential energy.
-      auto trial_at = [&](double alpha) {
-        VecX t = x;
-        for (int i = 0; i < map.size(); ++i) t(map.free[static_cast<size_t>(i)]) += alpha * d(i);
-        return t;
-      };
-      double alpha = 1.0;
-      bool accepted = false;
-      if (!problem.model->conservative()) {
-        // No potential (e.g. the surface model's blended anchors): backtrack on the residual norm, with the
-        // blocks' symmetric Jacobian approximations as the Newton matrix (a quasi-Newton iteration).
-        for (int ls = 0; ls < 40 && !accepted; ++ls, alpha *= 0.5) {
-          const VecX t = trial_at(alpha);
-          double s = 0.0;
-          const double rt = residual(t, lambda, s).norm();
-          if (std::isfinite(rt) && rt <= (1.0 - 1e-4 * alpha) * rnorm) {
-            x = t;
-            accepted = true;
-          }
-        }
-        if (!accepted) return false;
-        continue;
-      }
-      const double pi0 = model::potential_energy(problem, x, lambda);
-      for (int ls = 0; ls < 40; ++ls, alpha *= 0.5) {
-        const VecX t = trial_at(alpha);
-        const double pi = model::potential_energy(problem, t, lambda);
-        if (std::isfinite(pi) && pi <= pi0 + 1e-4 * alpha * slope) {
-          x = t;
-          accepted = true;
-          break;
-        }
-        // Near the solution the energy decrease drowns in round-off; a smaller residual is then enough.
-        if (std::isfinite(pi) && std::abs(pi - pi0) <= 1e-12 * std::abs(pi0)) {
-          double s = 0.0;
-          if (residual(t, lambda, s).norm() < rnorm) {
-            x = t;
-            accepted = true;
-            break;
-          }
-        }
-      }
-      if (!accepted) return false;
-    }
-    double scale = 0.0;
-    report.residual = residual(x, lambda, scale).norm();
-    return report.residual <= options.tolerance * std::max(scale, 1e-300);
+    objective.set_load_factor(lambda);
+    const NewtonReport r = newton.solve(objective, x, &report.residual_history);
+    report.iterations += r.iterations;
+    report.residual = r.residual;
+    return r.converged;
   }
 
-  // Without a potential the assembled matrix S is only the symmetric part of the blocks' Jacobians (and drops
-  // global rank-one couplings): solve J d = -r by GMRES (Saad, Iterative Methods, Alg. 6.9) right-
-  // preconditioned with S^-1 (the existing factor), J v from a forward difference of the residual (one force
-  // evaluation per iteration), to |r + J d| <= 1e-6 |r| or 40 iterations; keeps the plain S^-1 step when that
-  // is better.
-  void refine_step(const VecX& x, double lambda, const VecX& r, VecX& d) {
-    const double beta = r.norm();
-    if (!(beta > 0.0)) return;
-    auto jacobian_times = [&](const VecX& v) {
-      const double vmax = v.cwiseAbs().maxCoeff();
-      if (!(vmax > 0.0)) return VecX(VecX::Zero(v.size()));
-      const double eps = 1e-7 * size / vmax;
-      VecX t = x;
-      for (int i = 0; i < map.size(); ++i) t(map.free[static_cast<size_t>(i)]) += eps * v(i);
-      double s = 0.0;
-      return VecX((residual(t, lambda, s) - r) / eps);
-    };
-    const int m = std::min(40, map.size());
-    Eigen::MatrixXd basis(map.size(), m + 1), hess = Eigen::MatrixXd::Zero(m + 1, m);
-    basis.col(0) = -r / beta;
-    Eigen::VectorXd best;
-    for (int k = 0; k < m; ++k) {
-      VecX w = jacobian_times(chol.solve(basis.col(k)));
-      for (int i = 0; i <= k; ++i) {
-        hess(i, k) = basis.col(i).dot(w);
-        w -= hess(i, k) * basis.col(i);
-      }
-      hess(k + 1, k) = w.norm();
-      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(k + 2);
-      rhs(0) = beta;
-      const Eigen::MatrixXd h = hess.topLeftCorner(k + 2, k + 1);
-      best = h.colPivHouseholderQr().solve(rhs);
-      const double defect = (h * best - rhs).norm();
-      if (!(hess(k + 1, k) > 1e-14 * beta) || defect <= 1e-6 * beta) break;
-      basis.col(k + 1) = w / hess(k + 1, k);
-    }
-    if (best.size() == 0 || !best.allFinite()) return;
-    const VecX candidate = chol.solve(VecX(basis.leftCols(best.size()) * best));
-    if ((r + jacobian_times(candidate)).norm() < (r + jacobian_times(d)).norm()) d = candidate;
+  double residual(const VecX& x, double lambda) {
+    objective.set_load_factor(lambda);
+    VecX g(x.size());
+    objective.gradient(x, g);
+    return g.norm();
   }
 
   // Positive definiteness of the tangent on the free DOFs at x.
-  bool stable_at(const VecX& x) { return factorize(tangent(x)); }
+  bool stable_at(const VecX& x) {
+    const auto t0 = Clock::now();
+    const bool ok = stability_factor.factorize(objective.free_tangent(x, map));
+    report.factorization_seconds += seconds_since(t0);
+    return ok;
+  }
 };
 
 }  // namespace
@@ -244,10 +174,10 @@ StaticResult linear_static(const model::Problem& problem, const LinearOptions& o
   return result;
 }
 
-StaticResult static_equilibrium(const model::Problem& problem, const NewtonOptions& options) {
+StaticResult static_equilibrium(const model::Problem& problem, const StaticOptions& options) {
   if (options.check_stability && !problem.model->exact_hessian()) {
     // Positive definiteness of an approximate Hessian says nothing about stability.
-    NewtonOptions unchecked = options;
+    StaticOptions unchecked = options;
     unchecked.check_stability = false;
     StaticResult r = static_equilibrium(problem, unchecked);
     r.report.message += " (stability not checked: the model's Hessian is an approximation)";
@@ -260,13 +190,9 @@ StaticResult static_equilibrium(const model::Problem& problem, const NewtonOptio
   const detail::FreeMap map(model::free_dofs(problem), m.dof_count());
   rep.free_dofs = map.size();
   rep.reference_force = problem.external_force.norm();
-  NewtonState newton{problem, map, options, rep, SparseCholesky(options.backend), SparseMatrix(map.size(), map.size())};
-  newton.identity.setIdentity();
-  {
-    const VecX& rest = m.rest_positions();
-    newton.size = std::max(rest.maxCoeff() - rest.minCoeff(), 1e-300);
-  }
-  rep.backend = std::string(newton.chol.backend_name());
+  StaticObjective objective(problem, map, rep);
+  LoadStepper newton{objective, map, rep, NewtonSolver(options.newton), SparseCholesky(options.newton.backend)};
+  rep.backend = std::string(newton.newton.backend_name());
 
   VecX x_stable = model::initial_positions(problem);
   double lambda_stable = 0.0;
@@ -275,9 +201,10 @@ StaticResult static_equilibrium(const model::Problem& problem, const NewtonOptio
     rep.status = status;
     rep.message = std::move(message);
     rep.load_factor = lambda_stable;
-    double scale = 0.0;
-    rep.residual = newton.residual(x_stable, lambda_stable, scale).norm();
-    if (options.check_stability && map.size() > 0) rep.min_eigenvalue = smallest_eigenvalue(newton.tangent(x_stable));
+    rep.residual = newton.residual(x_stable, lambda_stable);
+    if (options.check_stability && map.size() > 0)
+      rep.min_eigenvalue = smallest_eigenvalue(objective.free_tangent(x_stable, map));
+    rep.factorization_seconds += newton.newton.factorization_seconds();
     result.positions = x_stable;
     rep.solve_seconds = seconds_since(t_start);
     return result;

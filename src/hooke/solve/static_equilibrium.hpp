@@ -2,6 +2,7 @@
 /// Static equilibrium of a Problem: the linear solve K u = f, and Newton's method on the total potential
 /// energy with line search, load stepping and a stability check of every accepted state.
 #include <hooke/model/problem.hpp>
+#include <hooke/solve/newton.hpp>
 #include <hooke/solve/sparse_cholesky.hpp>
 #include <string>
 #include <vector>
@@ -55,32 +56,29 @@ struct LinearOptions {
 /// the linear law; the linearised model otherwise) and u the displacement of the prescribed DOFs applied.
 StaticResult linear_static(const model::Problem& problem, const LinearOptions& options = {});
 
-struct NewtonOptions {
-  double tolerance = 1e-9;        ///< converged when |residual| <= tolerance * max(|f|, |reaction|), default 1e-9
-  double step_tolerance = 1e-13;  ///< also converged when a full Newton step moves no DOF by more than this times
-                                  ///< the body's size (the force test alone drowns in round-off at tiny loads)
-  int max_iterations = 40;        ///< Newton iterations per load step, default 40
-  int initial_load_steps = 4;     ///< the load is applied in this many equal steps at first, default 4
-  double min_load_step = 1e-3;    ///< give up when a step below this fails, default 1e-3
-  bool check_stability = true;    ///< test positive definiteness after every accepted step, default true
-  int bisection_steps = 7;        ///< refinements of the critical load factor, default 7
-  bool project_psd = false;       ///< project element Hessians to PSD (robust, slower convergence), default false
-  CholeskyBackend backend = CholeskyBackend::kAuto;  ///< sparse factorisation
+/// Options of the nonlinear static solve: Newton's (the same core as the implicit time steps) and the load
+/// stepping around it.
+struct StaticOptions {
+  /// Newton per load step (defaults of NewtonOptions: tolerance 1e-9, 40 iterations, Cholesky, no reuse)
+  NewtonOptions newton;
+  int initial_load_steps = 4;   ///< the load is applied in this many equal steps at first, default 4
+  double min_load_step = 1e-3;  ///< give up when a step below this fails, default 1e-3
+  bool check_stability = true;  ///< test positive definiteness after every accepted step, default true
+  int bisection_steps = 7;      ///< refinements of the critical load factor, default 7
   /// Optional initial guess at the full load (flat positions, m, size dof_count; prescribed DOFs are taken
   /// from the problem): Newton is tried from it first, and load stepping from rest only if that fails. Empty
   /// (default): load stepping from rest.
   VecX start;
 };
 
-/// Newton's method with backtracking (Armijo) line search on Pi(x) = E(x) - lambda f.(x - X), load
-/// stepping lambda: 0 -> 1 with step halving on failure, and Levenberg shifts where the tangent is
-/// indefinite. Every accepted state is checked for stability (the tangent on the free DOFs must be
-/// positive definite); when stability is lost, the critical load factor is bracketed by bisection and the
-/// last stable state is returned with status kUnstable: an unstable equilibrium is never the answer.
-/// A model with non-conservative blocks (Model::conservative() false) has no potential: its line search
+/// Newton's method (NewtonSolver) on Pi(x) = E(x) - lambda f.(x - X), load stepping lambda: 0 -> 1 with step halving on
+/// failure, and Levenberg shifts where the tangent is indefinite. Every accepted state is checked for stability (the
+/// tangent on the free DOFs must be positive definite); when stability is lost, the critical load factor is bracketed
+/// by bisection and the last stable state is returned with status kUnstable: an unstable equilibrium is never the
+/// answer. A model with non-conservative blocks (Model::conservative() false) has no potential: its line search
 /// backtracks on the residual norm instead, with the blocks' symmetric Jacobian approximations. Where a block's
 /// Hessian is approximate (Model::exact_hessian() false) Newton steps are refined by GMRES and stability is
 /// not checked (the message says so).
-StaticResult static_equilibrium(const model::Problem& problem, const NewtonOptions& options = {});
+StaticResult static_equilibrium(const model::Problem& problem, const StaticOptions& options = {});
 
 }  // namespace hooke::solve

@@ -1,0 +1,329 @@
+#include <Eigen/QR>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <hooke/core/error.hpp>
+#include <hooke/solve/detail/sparse_ops.hpp>
+#include <hooke/solve/newton.hpp>
+#include <limits>
+#include <string>
+
+namespace hooke::solve {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+}  // namespace
+
+NewtonLinearSolver newton_linear_solver_from_name(std::string_view name) {
+  if (name == "cholesky") return NewtonLinearSolver::kCholesky;
+  if (name == "cg") return NewtonLinearSolver::kConjugateGradient;
+  throw InvalidArgument("unknown linear solver '" + std::string(name) + "' (use cholesky or cg)");
+}
+
+std::string_view newton_linear_solver_name(NewtonLinearSolver solver) {
+  return solver == NewtonLinearSolver::kCholesky ? "cholesky" : "cg";
+}
+
+struct NewtonSolver::Impl {
+  NewtonOptions opt;
+  SparseCholesky cholesky;
+  bool have_factor = false;  // `cholesky` holds a factorisation of an earlier Newton matrix of this objective
+  double factor_seconds = 0.0;
+  VecX grad, delta, trial, grad_trial;
+  VecX cg_r, cg_z, cg_p, cg_q, cg_blocks;
+  long cg_iterations = 0;             // during the current solve or direction
+  std::vector<int> cg_block_offsets;  // per DOF and block column: offset in the Newton matrix's values, or -1
+  Eigen::Index cg_pattern_nonzeros = -1;
+
+  explicit Impl(const NewtonOptions& o) : opt(o), cholesky(o.backend) {}
+
+  bool cg() const { return opt.linear_solver == NewtonLinearSolver::kConjugateGradient; }
+
+  bool factorize(const SparseMatrix& h) {
+    const auto t0 = Clock::now();
+    const bool ok = cholesky.factorize(h);
+    factor_seconds += std::chrono::duration<double>(Clock::now() - t0).count();
+    return ok;
+  }
+
+  // Factorises h, with Levenberg shifts on the free diagonal where the (projected) matrix is still not positive
+  // definite (free particles in a quasi-static step, a buckling body, round-off).
+  bool factorize_shifted(NewtonObjective& f, SparseMatrix& h) {
+    double shift = 0.0;
+    const double diag = h.diagonal().cwiseAbs().maxCoeff();
+    const std::vector<int>& d = f.diagonal();
+    const std::vector<char>& fixed = f.fixed();
+    for (int attempt = 0; attempt < 30; ++attempt) {
+      if (factorize(h)) return true;
+      const double next = shift == 0.0 ? 1e-10 * diag : 10.0 * shift;
+      for (size_t i = 0; i < fixed.size(); ++i)
+        if (!fixed[i]) h.valuePtr()[d[i]] += next - shift;
+      shift = next;
+    }
+    return false;
+  }
+
+  // Node-block Jacobi preconditioner: the inverse of each node's dim x dim diagonal block of h (identity rows for
+  // fixed DOFs). Elasticity couples a node's axes strongly, so this takes about half the CG iterations of the
+  // scalar diagonal on the spring cylinders. cg_blocks holds the inverses, dim^2 per node, row-major.
+  void block_preconditioner(const SparseMatrix& h, int d) {
+    const Eigen::Index nd = h.rows(), n = nd / d;
+    if (cg_pattern_nonzeros != h.nonZeros()) {  // where each block entry sits in h's values (the pattern is fixed)
+      cg_pattern_nonzeros = h.nonZeros();
+      cg_block_offsets.assign(static_cast<size_t>(nd * d), -1);
+      for (Eigen::Index c = 0; c < nd; ++c)
+        for (SparseMatrix::InnerIterator it(h, c); it; ++it)
+          if (it.row() / d == c / d)
+            cg_block_offsets[static_cast<size_t>(d * c + it.row() % d)] =
+                static_cast<int>(&it.valueRef() - h.valuePtr());
+      cg_blocks.setZero(nd * d);
+    }
+    const double* values = h.valuePtr();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      Eigen::Matrix3d b = Eigen::Matrix3d::Identity();
+      for (int a = 0; a < d; ++a)
+        for (int c = 0; c < d; ++c) {
+          const int q = cg_block_offsets[static_cast<size_t>(d * (d * i + c) + a)];
+          b(a, c) = q >= 0 ? values[q] : 0.0;
+        }
+      const Eigen::Matrix3d inverse = b.inverse();
+      for (int a = 0; a < d; ++a)
+        for (int c = 0; c < d; ++c) cg_blocks(d * d * i + d * a + c) = inverse(a, c);
+    }
+  }
+
+  void precondition(const VecX& r, VecX& z, int d) const {
+    for (Eigen::Index i = 0; i < r.size() / d; ++i)
+      for (int a = 0; a < d; ++a) {
+        double sum = 0.0;
+        for (int c = 0; c < d; ++c) sum += cg_blocks(d * d * i + d * a + c) * r(d * i + c);
+        z(d * i + a) = sum;
+      }
+  }
+
+  // Preconditioned conjugate gradients on h x = -g to |residual| <= tolerance |g|, warm-started from x. Returns
+  // false where h shows a direction of non-positive curvature (not positive definite).
+  bool conjugate_gradient(const SparseMatrix& h, int d, const VecX& g, double tolerance, VecX& x) {
+    const Eigen::Index nd = g.size();
+    if (cg_r.size() != nd) {
+      for (VecX* w : {&cg_r, &cg_z, &cg_p, &cg_q}) w->setZero(nd);
+      x.setZero(nd);
+    }
+    block_preconditioner(h, d);
+    detail::multiply(h, x, cg_q);
+    cg_r = -g - cg_q;
+    const double target = tolerance * g.norm();
+    precondition(cg_r, cg_z, d);
+    cg_p = cg_z;
+    double rz = cg_r.dot(cg_z);
+    for (Eigen::Index k = 0; k < 4 * nd && cg_r.norm() > target; ++k) {
+      ++cg_iterations;
+      detail::multiply(h, cg_p, cg_q);
+      const double curvature = cg_p.dot(cg_q);
+      if (!(curvature > 0.0)) return false;
+      const double alpha = rz / curvature;
+      x += alpha * cg_p;
+      cg_r -= alpha * cg_q;
+      precondition(cg_r, cg_z, d);
+      const double rz_next = cg_r.dot(cg_z);
+      cg_p = cg_z + (rz_next / rz) * cg_p;
+      rz = rz_next;
+    }
+    return true;
+  }
+
+  bool direction(NewtonObjective& f, const VecX& z, const VecX& g, double cg_tolerance, VecX& out) {
+    if (cg()) {
+      if (out.size() != g.size()) out.setZero(g.size());
+      if (conjugate_gradient(f.newton_matrix(z, opt.project_psd), f.dim(), g, cg_tolerance, out) || opt.project_psd)
+        return true;
+      out.setZero();
+      return conjugate_gradient(f.newton_matrix(z, true), f.dim(), g, cg_tolerance, out);
+    }
+    if (opt.project_psd || !factorize(f.newton_matrix(z, false)))
+      if (!factorize_shifted(f, f.newton_matrix(z, true))) return false;
+    out = -g;
+    cholesky.solve_in_place(out.data(), 1);
+    return true;
+  }
+
+  // Where the Newton matrix S only approximates the gradient's Jacobian J (the symmetric part of non-conservative
+  // blocks' Jacobians, a dense coupling dropped): solve J d = -g by GMRES (Saad, Iterative Methods, Alg. 6.9) right-
+  // preconditioned with S^-1 (the current factor), J v from a forward difference of the gradient (one gradient
+  // evaluation per iteration), to |g + J d| <= 1e-6 |g| or 40 iterations; keeps the plain S^-1 step when better.
+  void refine(NewtonObjective& f, const VecX& z, const VecX& g, VecX& d) {
+    const double beta = g.norm();
+    if (!(beta > 0.0)) return;
+    auto jacobian_times = [&](const VecX& v) {
+      const double vmax = v.cwiseAbs().maxCoeff();
+      if (!(vmax > 0.0)) return VecX(VecX::Zero(v.size()));
+      const double eps = 1e-7 * f.size() / vmax;
+      VecX t = z + eps * v, gt(z.size());
+      f.gradient(t, gt);
+      return VecX((gt - g) / eps);
+    };
+    const Eigen::Index n = g.size();
+    const int m = static_cast<int>(std::min<Eigen::Index>(40, n));
+    Eigen::MatrixXd basis(n, m + 1), hess = Eigen::MatrixXd::Zero(m + 1, m);
+    basis.col(0) = -g / beta;
+    Eigen::VectorXd best;
+    for (int k = 0; k < m; ++k) {
+      VecX w = jacobian_times(cholesky.solve(basis.col(k)));
+      for (int i = 0; i <= k; ++i) {
+        hess(i, k) = basis.col(i).dot(w);
+        w -= hess(i, k) * basis.col(i);
+      }
+      hess(k + 1, k) = w.norm();
+      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(k + 2);
+      rhs(0) = beta;
+      const Eigen::MatrixXd h = hess.topLeftCorner(k + 2, k + 1);
+      best = h.colPivHouseholderQr().solve(rhs);
+      const double defect = (h * best - rhs).norm();
+      if (!(hess(k + 1, k) > 1e-14 * beta) || defect <= 1e-6 * beta) break;
+      basis.col(k + 1) = w / hess(k + 1, k);
+    }
+    if (best.size() == 0 || !best.allFinite()) return;
+    const VecX candidate = cholesky.solve(VecX(basis.leftCols(best.size()) * best));
+    if ((g + jacobian_times(candidate)).norm() < (g + jacobian_times(d)).norm()) d = candidate;
+    f.gradient(z, grad);  // jacobian_times left the objective's force scale at a trial point
+  }
+
+  NewtonReport solve(NewtonObjective& f, VecX& y, std::vector<double>* history) {
+    NewtonReport r;
+    const Eigen::Index nd = y.size();
+    for (VecX* w : {&grad, &trial, &grad_trial})
+      if (w->size() != nd) w->setZero(nd);
+    if (delta.size() != nd) delta.setZero(nd);
+    cg_iterations = 0;
+    const bool potential = f.conservative();
+    double phi = potential ? f.value(y) : 0.0;
+    double previous = std::numeric_limits<double>::infinity();
+    double eta = 0.1, last_residual = 0.0;  // cg: forcing term and the residual it was chosen at
+    const double step_floor = opt.step_tolerance * f.size();
+    int it = 0;
+    for (; it < opt.max_iterations; ++it) {
+      f.gradient(y, grad);
+      r.residual = grad.norm();
+      r.iterations = it;
+      if (history) history->push_back(r.residual);
+      if (!std::isfinite(r.residual)) break;
+      if (r.residual <= opt.tolerance * std::max(f.force_scale(), 1e-300)) {
+        r.converged = true;
+        break;
+      }
+      // Modified Newton: keep the last factorisation while it still reduces the residual at least fourfold per
+      // iteration; refactorise when it does not, when it gives no descent, or when its line search fails.
+      const bool reuse = !cg() && opt.reuse_factorization && have_factor && r.residual <= 0.25 * previous;
+      if (cg()) {
+        // Inexact Newton (Eisenstat & Walker 1996, choice 2): the CG tolerance follows the residual's decrease,
+        // loose far from the solution, down to cg_tolerance near it; tightened when the step is no descent.
+        if (it > 0)
+          eta = std::clamp(0.9 * (r.residual / last_residual) * (r.residual / last_residual), opt.cg_tolerance, 0.1);
+        last_residual = r.residual;
+        if (!direction(f, y, grad, eta, delta)) break;
+        if (!(grad.dot(delta) < 0.0) && eta > opt.cg_tolerance && !direction(f, y, grad, opt.cg_tolerance, delta))
+          break;
+      } else if (reuse) {
+        delta = -grad;
+        cholesky.solve_in_place(delta.data(), 1);
+      } else {
+        if (!direction(f, y, grad, 0.0, delta)) break;
+        have_factor = true;
+        if (!f.exact_hessian() && opt.refine_approximate_steps) refine(f, y, grad, delta);
+      }
+      previous = reuse ? r.residual : std::numeric_limits<double>::infinity();
+      double slope = grad.dot(delta);
+      if (!(slope < 0.0)) {
+        if (reuse) {
+          have_factor = false;
+          continue;
+        }
+        delta = -grad;  // no descent from the (refined) direction: steepest descent
+        slope = -grad.squaredNorm();
+      }
+      if (delta.cwiseAbs().maxCoeff() <= step_floor) {  // a step below round-off: nothing more to gain
+        y += delta;
+        f.gradient(y, grad);
+        r.residual = grad.norm();
+        r.iterations = it + 1;
+        r.converged = true;
+        r.linear_iterations = cg_iterations;
+        return r;
+      }
+      double alpha = 1.0;
+      bool accepted = false;
+      for (int ls = 0; ls < 40 && !accepted; ++ls, alpha *= 0.5) {
+        trial = y + alpha * delta;
+        if (potential) {
+          const double p = f.value(trial);
+          if (std::isfinite(p) && p <= phi + 1e-4 * alpha * slope) {
+            phi = p;
+            accepted = true;
+          } else if (std::isfinite(p) && std::abs(p - phi) <= 1e-12 * std::abs(phi)) {
+            // Near the solution the decrease drowns in round-off; a smaller residual is then enough.
+            f.gradient(trial, grad_trial);
+            if (grad_trial.norm() < r.residual) {
+              phi = p;
+              accepted = true;
+            }
+          }
+        } else {
+          f.gradient(trial, grad_trial);
+          const double rt = grad_trial.norm();
+          accepted = std::isfinite(rt) && rt <= (1.0 - 1e-4 * alpha) * r.residual;
+        }
+        if (accepted) break;
+      }
+      if (!accepted) {
+        if (!reuse) break;
+        have_factor = false;
+        continue;
+      }
+      y = trial;
+    }
+    if (!r.converged) {
+      f.gradient(y, grad);
+      r.residual = grad.norm();
+      r.converged = std::isfinite(r.residual) && r.residual <= opt.tolerance * std::max(f.force_scale(), 1e-300);
+      r.iterations = it;  // the limit, or where no step could be taken
+    }
+    r.linear_iterations = cg_iterations;
+    return r;
+  }
+};
+
+NewtonSolver::NewtonSolver(const NewtonOptions& options) : m(std::make_unique<Impl>(options)) {
+  if (options.max_iterations < 1 || !(options.tolerance > 0.0) || !(options.step_tolerance >= 0.0) ||
+      !(options.cg_tolerance > 0.0 && options.cg_tolerance < 1.0))
+    throw InvalidArgument(
+        "Newton needs at least 1 iteration, a tolerance > 0, a step tolerance >= 0 and a CG tolerance in (0, 1)");
+}
+NewtonSolver::~NewtonSolver() = default;
+NewtonSolver::NewtonSolver(NewtonSolver&&) noexcept = default;
+NewtonSolver& NewtonSolver::operator=(NewtonSolver&&) noexcept = default;
+
+NewtonReport NewtonSolver::solve(NewtonObjective& f, VecX& z, std::vector<double>* residual_history) {
+  return m->solve(f, z, residual_history);
+}
+
+bool NewtonSolver::direction(NewtonObjective& f, const VecX& z, const VecX& gradient, double cg_tolerance,
+                             VecX& delta) {
+  m->cg_iterations = 0;
+  const bool ok = m->direction(f, z, gradient, cg_tolerance, delta);
+  m->have_factor = false;
+  return ok;
+}
+
+void NewtonSolver::invalidate() {
+  m->have_factor = false;
+  m->cg_r.resize(0);
+  m->cg_pattern_nonzeros = -1;
+}
+
+const NewtonOptions& NewtonSolver::options() const { return m->opt; }
+long NewtonSolver::linear_iterations() const { return m->cg_iterations; }
+double NewtonSolver::factorization_seconds() const { return m->factor_seconds; }
+std::string_view NewtonSolver::backend_name() const { return m->cg() ? "cg" : m->cholesky.backend_name(); }
+
+}  // namespace hooke::solve
