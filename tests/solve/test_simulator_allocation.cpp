@@ -152,13 +152,14 @@ TEST(SurfaceStepAllocation, NoHeapAllocationAfterTheFirstStep) {
   for (const Integrator integrator : {Integrator::kSymplecticEuler, Integrator::kImplicitEuler}) {
     const calibrate::SurfaceModel s =
         calibrate::make_surface_model(mesh::uv_sphere_surface(12, 20, 0.05), {material::Law::kLinear, 1000.0, 0.3});
-    s.volume->set_interaction({s.mesh.nodes.row(0).transpose(), Vec3(0, 0, -1), 0.1});
+    model::Problem problem = model::make_problem(s.model);
+    problem.interaction = model::Interaction{s.mesh.nodes.row(0).transpose(), Vec3(0, 0, -1), 0.1};
     VecX gravity = VecX::Zero(3);
     gravity(2) = -9.81;
     SimulatorOptions options;
     options.integrator = integrator;
     options.newton.linear_solver = NewtonLinearSolver::kConjugateGradient;
-    Simulator sim(model::make_problem(s.model), {s.masses, gravity, 2.0, 0.0}, options);
+    Simulator sim(problem, {s.masses, gravity, 2.0, 0.0}, options);
     Probe probe{{0}, false, VecX(), Vec3(0.0, 0.0, 0.0)};
     const double dt = integrator == Integrator::kSymplecticEuler ? 0.5 * sim.stable_time_step() : 1e-3;
     sim.set_probe(probe);

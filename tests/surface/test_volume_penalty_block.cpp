@@ -85,16 +85,18 @@ TEST(VolumePenalty, WeightsSumToTheNodeCountAndFollowTheInteraction) {
   // Without an interaction, w = 1.
   const VolumePenaltyBlock b = s.block(VolumeForce::kNodal);
   EXPECT_EQ(b.weights(s.rest), VecX::Ones(s.mesh.node_count()));
-  b.set_interaction(push);
-  EXPECT_NEAR(b.weights(s.rest).sum(), static_cast<double>(s.mesh.node_count()), 1e-10);
+  EXPECT_NEAR(b.weights(s.rest, &push).sum(), static_cast<double>(s.mesh.node_count()), 1e-10);
   // Under the interaction the penalty pushes nodes away from the interaction point.
-  const VecX g = test::block_gradient(b, s.rest * 0.99);
+  const VecX x = s.rest * 0.99;
+  VecX g = VecX::Zero(x.size());
+  b.add_interaction_gradient(x, push, g);
   for (int i = 1; i < s.mesh.node_count(); ++i)
-    if (b.weights(s.rest * 0.99)(i) > 0.0) {
-      EXPECT_LT(g.segment<3>(3 * i).dot(s.rest.segment<3>(3 * i) * 0.99 - push.point), 0.0);
+    if (b.weights(x, &push)(i) > 0.0) {
+      EXPECT_LT(g.segment<3>(3 * i).dot(x.segment<3>(3 * i) - push.point), 0.0);
     }
-  b.clear_interaction();
-  EXPECT_EQ(b.weights(s.rest), VecX::Ones(s.mesh.node_count()));
+  // The block holds no interaction: its plain forces are those of w = 1 along the normals, as before.
+  EXPECT_EQ(test::block_gradient(b, x), test::block_gradient(s.block(VolumeForce::kNodal), x));
+  EXPECT_GT((test::block_gradient(b, x) - g).norm(), 0.0);
 }
 
 }  // namespace

@@ -23,7 +23,7 @@ VecX pushed(const calibrate::SurfaceModel& s, int node, double force) {
   model::Problem p = model::make_problem(s.model);
   p.external_force = VecX::Zero(s.model->dof_count());
   p.external_force(3 * node + 2) = -force;
-  if (s.volume) s.volume->set_interaction({s.mesh.nodes.row(node).transpose(), Vec3(0, 0, -1), 2.0 * kRadius});
+  if (s.volume) p.interaction = model::Interaction{s.mesh.nodes.row(node).transpose(), Vec3(0, 0, -1), 2.0 * kRadius};
   solve::StaticOptions statics;
   statics.newton.max_iterations = 100;
   const solve::StaticResult r = solve::static_equilibrium(p, statics);
@@ -223,7 +223,7 @@ std::vector<WeightsRow> arnab2008_fig11(double nu, Figure* figure) {
     model::Problem p = model::make_problem(s.model);
     p.external_force = VecX::Zero(s.model->dof_count());
     p.external_force(2) = -0.005;  // node 0: the top pole
-    if (run_time) s.volume->set_interaction({s.mesh.nodes.row(0).transpose(), Vec3(0, 0, -1), 2.0 * kRadius});
+    if (run_time) p.interaction = model::Interaction{s.mesh.nodes.row(0).transpose(), Vec3(0, 0, -1), 2.0 * kRadius};
     solve::StaticOptions statics;
     statics.newton.max_iterations = 100;
     const solve::StaticResult r = solve::static_equilibrium(p, statics);

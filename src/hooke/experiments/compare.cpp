@@ -135,7 +135,7 @@ Comparison compare_calibrated(const calibrate::CalibratedModel& model, const Com
     // The interaction of Eq. 4 at the centre of the loaded face, along the load.
     Vec3 centre = Vec3::Zero();
     for (int i : c.load.top_nodes) centre += surface.nodes.row(i).transpose() / c.load.top_nodes.size();
-    built.volume_penalty->set_interaction({centre, Vec3(c.load.direction), mesh::bounding_box_diagonal(surface)});
+    problem.interaction = model::Interaction{centre, Vec3(c.load.direction), mesh::bounding_box_diagonal(surface)};
   }
   solve::StaticOptions statics;
   statics.newton.max_iterations = 100;

@@ -40,7 +40,7 @@ Extraction extract(int n, double e, double nu, double a, double strain_load, cal
   model::Problem p = model::make_problem(s.model);
   const double sigma = strain_load * e;
   p.external_force = detail::top_face_load(s.mesh, a, Vec3(0, 0, -sigma));
-  if (s.volume) s.volume->set_interaction({Vec3(a / 2, a / 2, a), Vec3(0, 0, -1), 2.0 * a});
+  if (s.volume) p.interaction = model::Interaction{Vec3(a / 2, a / 2, a), Vec3(0, 0, -1), 2.0 * a};
   solve::StaticOptions statics;
   statics.newton.max_iterations = 100;
   const solve::StaticResult r = solve::static_equilibrium(p, statics);

@@ -79,8 +79,10 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
     if (built.volume_penalty) {  // the weights of Eq. 4 follow the probe (Arnab & Raja, Fig. 11)
       const double radius = o.influence_radius > 0.0 ? o.influence_radius : 0.5 * mesh::bounding_box_diagonal(cm.mesh);
       const VecX& v = probe.drive_position ? o.probe_offset : o.probe_force;
-      if (v.norm() > 0.0)
-        built.volume_penalty->set_interaction({cm.mesh.nodes.row(probe.nodes[0]).transpose(), Vec3(v), radius});
+      if (v.norm() > 0.0) {
+        sim.problem().interaction = model::Interaction{cm.mesh.nodes.row(probe.nodes[0]).transpose(), Vec3(v), radius};
+        model::require_valid(*sim.problem().interaction);
+      }
     }
   }
   SimulationSummary s;

@@ -96,11 +96,16 @@ HessianAssembly::HessianAssembly(int dim, int dof_count, std::vector<const TermB
   }
 }
 
-void HessianAssembly::assemble(const Eigen::Ref<const VecX>& x, bool project_psd) {
+void HessianAssembly::assemble(const Eigen::Ref<const VecX>& x, bool project_psd, const Interaction* interaction) {
   double* values = m_matrix.valuePtr();
   std::fill(values, values + m_matrix.nonZeros(), 0.0);
-  for (size_t b = 0; b < m_blocks.size(); ++b)
-    if (!m_scatter[b].base.empty()) m_blocks[b]->add_hessian_values(x, m_scatter[b], values, project_psd);
+  for (size_t b = 0; b < m_blocks.size(); ++b) {
+    if (m_scatter[b].base.empty()) continue;
+    if (interaction && m_blocks[b]->follows_interaction())
+      m_blocks[b]->add_interaction_hessian_values(x, *interaction, m_scatter[b], values, project_psd);
+    else
+      m_blocks[b]->add_hessian_values(x, m_scatter[b], values, project_psd);
+  }
 }
 
 SparseMatrix block_hessian(const TermBlock& block, int dim, const Eigen::Ref<const VecX>& x, bool project_psd) {

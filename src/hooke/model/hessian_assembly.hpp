@@ -19,7 +19,8 @@ class HessianAssembly {
   /// Overwrites the matrix values with d2E/dx2 at x, N/m.
   /// @param x            flat positions, m (size dof_count)
   /// @param project_psd  project each element's Hessian to positive semi-definite first
-  void assemble(const Eigen::Ref<const VecX>& x, bool project_psd);
+  /// @param interaction  where an interaction pushes, for blocks that follow one (null: none)
+  void assemble(const Eigen::Ref<const VecX>& x, bool project_psd, const Interaction* interaction = nullptr);
 
   /// The assembled matrix (dof_count square, both triangles stored, compressed). Its values may be changed
   /// between calls (adding masses, constraints); its pattern must not.

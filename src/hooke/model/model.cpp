@@ -1,3 +1,4 @@
+#include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/model/hessian_assembly.hpp>
 #include <hooke/model/model.hpp>
@@ -29,21 +30,31 @@ double Model::energy(const Eigen::Ref<const VecX>& x) const {
   return e;
 }
 
-VecX Model::gradient(const Eigen::Ref<const VecX>& x) const {
+VecX Model::gradient(const Eigen::Ref<const VecX>& x, const Interaction* interaction) const {
   VecX g(x.size());
-  gradient(x, g);
+  gradient(x, g, interaction);
   return g;
 }
 
-void Model::gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
+void Model::gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient, const Interaction* interaction) const {
   gradient.setZero();
-  for (const auto& b : m_blocks) b->add_gradient(x, gradient);
+  for (const auto& b : m_blocks)
+    if (interaction && b->follows_interaction())
+      b->add_interaction_gradient(x, *interaction, gradient);
+    else
+      b->add_gradient(x, gradient);
 }
 
-SparseMatrix Model::hessian(const Eigen::Ref<const VecX>& x, bool project_psd) const {
+SparseMatrix Model::hessian(const Eigen::Ref<const VecX>& x, bool project_psd, const Interaction* interaction) const {
   HessianAssembly assembly(*this);
-  assembly.assemble(x, project_psd);
+  assembly.assemble(x, project_psd, interaction);
   return assembly.matrix();
+}
+
+void require_valid(const Interaction& interaction) {
+  if (!(interaction.radius > 0.0) || !std::isfinite(interaction.radius) || !(interaction.direction.norm() > 0.0) ||
+      !interaction.direction.allFinite() || !interaction.point.allFinite())
+    throw InvalidArgument("an interaction needs a finite point, a radius of influence > 0 and a non-zero direction");
 }
 
 }  // namespace hooke::model

@@ -7,6 +7,8 @@
 
 namespace hooke::model {
 
+/// Immutable once built (add() aside): every evaluation is const and thread-safe, so one model may be shared by
+/// several problems, solvers and threads.
 class Model {
  public:
   /// @param dim             2 or 3
@@ -29,12 +31,15 @@ class Model {
   bool exact_hessian() const;
   /// Total elastic energy at x, J.
   double energy(const Eigen::Ref<const VecX>& x) const;
-  /// dE/dx at x, N.
-  VecX gradient(const Eigen::Ref<const VecX>& x) const;
+  /// dE/dx at x, N (the blocks' forces: for non-conservative blocks not a gradient). With an interaction,
+  /// blocks that follow one (TermBlock::follows_interaction) evaluate under it.
+  VecX gradient(const Eigen::Ref<const VecX>& x, const Interaction* interaction = nullptr) const;
   /// Writes dE/dx at x (N) into `gradient` (size dof_count); allocates nothing.
-  void gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const;
+  void gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient,
+                const Interaction* interaction = nullptr) const;
   /// d2E/dx2 at x, N/m, assembled (dof_count x dof_count, symmetric).
-  SparseMatrix hessian(const Eigen::Ref<const VecX>& x, bool project_psd = false) const;
+  SparseMatrix hessian(const Eigen::Ref<const VecX>& x, bool project_psd = false,
+                       const Interaction* interaction = nullptr) const;
 
  private:
   int m_dim;

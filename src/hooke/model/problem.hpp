@@ -3,6 +3,7 @@
 #include <hooke/core/types.hpp>
 #include <hooke/model/model.hpp>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace hooke::model {
@@ -12,6 +13,10 @@ struct Problem {
   std::vector<char> fixed_dofs;        ///< per DOF: 1 where the position is prescribed (size model->dof_count())
   VecX prescribed_positions;           ///< positions of fixed DOFs, m (entries of free DOFs ignored); rest if empty
   VecX external_force;                 ///< dead nodal forces, N (size dof_count; zero where fixed)
+  /// where a probe pushes, for blocks whose forces follow it (the surface model's Eq. 4 weights); none by default
+  std::optional<Interaction> interaction;
+  /// The interaction or null (what Model's evaluations take).
+  const Interaction* interaction_or_null() const { return interaction ? &*interaction : nullptr; }
 };
 
 /// A problem with every DOF free, no forces, fixed DOFs at their rest positions.

@@ -3,6 +3,7 @@
 #include <array>
 #include <hooke/core/types.hpp>
 #include <hooke/model/hessian_scatter.hpp>
+#include <hooke/model/interaction.hpp>
 #include <string_view>
 #include <vector>
 
@@ -24,7 +25,8 @@ class CentralSprings {
 
 /// Interface of a term block. Positions x are flat and node-major: x[dim * node + axis], m.
 /// One virtual call per block and evaluation, never per element. energy, add_gradient and add_hessian_values
-/// allocate nothing (the real-time loop of solve::Simulator relies on it).
+/// allocate nothing (the real-time loop of solve::Simulator relies on it) and are safe to call from several threads
+/// at once: a block is immutable data.
 class TermBlock {
  public:
   virtual ~TermBlock() = default;
@@ -53,6 +55,22 @@ class TermBlock {
   /// @param project_psd  project each element's Hessian to positive semi-definite first
   virtual void add_hessian_values(const Eigen::Ref<const VecX>& x, const HessianScatter& scatter, double* values,
                                   bool project_psd) const = 0;
+
+  /// True when the block's forces depend on where an interaction pushes (default false); Model then calls the
+  /// interaction_ variants below when the problem has an interaction.
+  virtual bool follows_interaction() const { return false; }
+  /// add_gradient under `interaction` (default: add_gradient, the interaction ignored).
+  virtual void add_interaction_gradient(const Eigen::Ref<const VecX>& x, const Interaction& interaction,
+                                        Eigen::Ref<VecX> gradient) const {
+    (void)interaction;
+    add_gradient(x, gradient);
+  }
+  /// add_hessian_values under `interaction` (default: add_hessian_values, the interaction ignored).
+  virtual void add_interaction_hessian_values(const Eigen::Ref<const VecX>& x, const Interaction& interaction,
+                                              const HessianScatter& scatter, double* values, bool project_psd) const {
+    (void)interaction;
+    add_hessian_values(x, scatter, values, project_psd);
+  }
 };
 
 }  // namespace hooke::model

@@ -52,7 +52,8 @@ struct Simulator::Impl {
       r.probe_force = -probe.force;
       return;
     }
-    model().gradient(s.x, s.grad);  // at the new x: also the next explicit step's gradient
+    model().gradient(s.x, s.grad,
+                     s.problem.interaction_or_null());  // at the new x: also the next explicit step's gradient
     s.gradient_valid = true;
     for (int node : probe.nodes) r.probe_force -= s.grad.segment(d * node, d) - s.f_total.segment(d * node, d);
   }

@@ -45,7 +45,7 @@ class StaticObjective final : public NewtonObjective {
   // count where the body is held by prescribed displacements alone.
   void gradient(const VecX& z, VecX& out) override {
     const auto t0 = Clock::now();
-    m_problem.model->gradient(z, m_model_gradient);
+    m_problem.model->gradient(z, m_model_gradient, m_problem.interaction_or_null());
     m_report.assembly_seconds += seconds_since(t0);
     out = m_model_gradient - m_lambda * m_problem.external_force;
     m_scale = std::max((m_lambda * m_problem.external_force).norm(), m_model_gradient.norm());
@@ -55,7 +55,7 @@ class StaticObjective final : public NewtonObjective {
   double force_scale() const override { return m_scale; }
   SparseMatrix& newton_matrix(const VecX& z, bool project) override {
     const auto t0 = Clock::now();
-    m_assembly.assemble(z, project);
+    m_assembly.assemble(z, project, m_problem.interaction_or_null());
     detail::constrain(m_assembly.matrix(), m_fixed, 1);
     m_report.assembly_seconds += seconds_since(t0);
     return m_assembly.matrix();
@@ -65,7 +65,7 @@ class StaticObjective final : public NewtonObjective {
   // The exact tangent restricted to the free DOFs (for the stability test and the smallest eigenvalue).
   SparseMatrix free_tangent(const VecX& z, const detail::FreeMap& map) {
     const auto t0 = Clock::now();
-    m_assembly.assemble(z, false);
+    m_assembly.assemble(z, false, m_problem.interaction_or_null());
     SparseMatrix h = map.restrict(m_assembly.matrix());
     m_report.assembly_seconds += seconds_since(t0);
     return h;
@@ -139,10 +139,11 @@ StaticResult linear_static(const model::Problem& problem, const LinearOptions& o
   const VecX u_prescribed = x - m.rest_positions();
 
   auto t0 = Clock::now();
-  const SparseMatrix k_full = m.hessian(m.rest_positions());
+  const SparseMatrix k_full = m.hessian(m.rest_positions(), false, problem.interaction_or_null());
   // Linearised about the rest state: K u = f - g(X) - K u_c, with g(X) the (normally zero) internal force at rest
   // and u_c the prescribed displacements.
-  const VecX rhs_full = problem.external_force - m.gradient(m.rest_positions()) - k_full * u_prescribed;
+  const VecX rhs_full =
+      problem.external_force - m.gradient(m.rest_positions(), problem.interaction_or_null()) - k_full * u_prescribed;
   const SparseMatrix k = map.restrict(k_full);
   rep.assembly_seconds = seconds_since(t0);
 

@@ -39,9 +39,22 @@ double volume_and_gradient(const RowMatXi& tri, const Eigen::Ref<const VecX>& x,
   return v;
 }
 
-void require_valid(const Interaction& interaction) {
-  if (!(interaction.radius > 0.0) || !(interaction.direction.norm() > 0.0))
-    throw InvalidArgument("an interaction needs a radius of influence > 0 and a non-zero force direction");
+// Work vectors of one evaluation, per thread (a block is shared by threads and must not hold them); sized at the
+// first evaluation of a block of this size on the thread, allocation-free after.
+struct Scratch {
+  VecX volume_gradient, weights, normals;
+  std::vector<char> done;
+};
+
+Scratch& scratch(Eigen::Index nodes) {
+  thread_local Scratch s;
+  if (s.weights.size() != nodes) {
+    s.volume_gradient.setZero(3 * nodes);
+    s.normals.setZero(3 * nodes);
+    s.weights.setOnes(nodes);
+    s.done.assign(static_cast<size_t>(nodes), 0);
+  }
+  return s;
 }
 
 void fill_weights(const Eigen::Ref<const VecX>& x, const Interaction& in, VecX& w) {
@@ -77,7 +90,7 @@ std::string_view volume_force_name(VolumeForce force) { return kNames.name(force
 VolumeForce volume_force_from_name(std::string_view name) { return kNames.from_name(name); }
 
 VecX interaction_weights(const Eigen::Ref<const VecX>& x, const Interaction& interaction) {
-  require_valid(interaction);
+  model::require_valid(interaction);
   VecX w;
   fill_weights(x, interaction, w);
   return w;
@@ -95,26 +108,11 @@ VolumePenaltyBlock::VolumePenaltyBlock(RowMatXi triangles, double rest_volume, V
   if (!(bulk_modulus > 0.0)) throw InvalidArgument("VolumePenaltyBlock: the bulk modulus must be positive");
   if (m_k_bulk.size() != m_normal_length.size())
     throw InvalidArgument("VolumePenaltyBlock: one K_B and one L' per node");
-  m_volume_gradient.setZero(3 * m_k_bulk.size());
-  m_weights.setOnes(m_k_bulk.size());
-  m_normals.setZero(3 * m_k_bulk.size());
-  m_done.assign(static_cast<size_t>(m_k_bulk.size()), 0);
 }
 
-void VolumePenaltyBlock::set_interaction(const Interaction& interaction) const {
-  require_valid(interaction);
-  m_interaction = interaction;
-  m_interacting = true;
-}
-
-void VolumePenaltyBlock::clear_interaction() const {
-  m_interacting = false;
-  m_weights.setOnes();
-}
-
-VecX VolumePenaltyBlock::weights(const Eigen::Ref<const VecX>& x) const {
-  if (!m_interacting) return VecX::Ones(x.size() / 3);
-  return interaction_weights(x, m_interaction);
+VecX VolumePenaltyBlock::weights(const Eigen::Ref<const VecX>& x, const Interaction* interaction) const {
+  if (!interaction) return VecX::Ones(x.size() / 3);
+  return interaction_weights(x, *interaction);
 }
 
 double VolumePenaltyBlock::energy(const Eigen::Ref<const VecX>& x) const {
@@ -123,20 +121,31 @@ double VolumePenaltyBlock::energy(const Eigen::Ref<const VecX>& x) const {
 }
 
 void VolumePenaltyBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
-  VecX& g = m_volume_gradient;
-  const double v = volume_and_gradient(m_triangles, x, g, m_normals);
-  const VecX& normals = m_normals;
+  add_forces(x, nullptr, gradient);
+}
+
+void VolumePenaltyBlock::add_interaction_gradient(const Eigen::Ref<const VecX>& x, const Interaction& interaction,
+                                                  Eigen::Ref<VecX> gradient) const {
+  add_forces(x, &interaction, gradient);
+}
+
+void VolumePenaltyBlock::add_forces(const Eigen::Ref<const VecX>& x, const Interaction* interaction,
+                                    Eigen::Ref<VecX> gradient) const {
+  Scratch& w = scratch(m_k_bulk.size());
+  VecX& g = w.volume_gradient;
+  const double v = volume_and_gradient(m_triangles, x, g, w.normals);
+  const VecX& normals = w.normals;
   const double lost = m_rest_volume - v;
   if (m_force == VolumeForce::kEnergy) {
     gradient -= (m_bulk_modulus * lost / m_rest_volume) * g;  // force +K (V0 - V)/V0 dV/dx
     return;
   }
-  if (m_interacting) fill_weights(x, m_interaction, m_weights);
+  if (interaction) fill_weights(x, *interaction, w.weights);
   const double scale = m_force == VolumeForce::kNodal ? lost / m_rest_volume : lost;
   for (Eigen::Index i = 0; i < m_k_bulk.size(); ++i) {
     Vec3 dir;
-    if (m_interacting) {
-      dir = x.segment<3>(3 * i) - m_interaction.point;
+    if (interaction) {
+      dir = x.segment<3>(3 * i) - interaction->point;
       const double l = dir.norm();
       if (l == 0.0) continue;
       dir /= l;
@@ -144,7 +153,7 @@ void VolumePenaltyBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Re
       dir = normals.segment<3>(3 * i).normalized();
     }
     const double k = m_force == VolumeForce::kNodal ? m_k_bulk(i) * m_normal_length(i) : m_k_bulk(i);
-    gradient.segment<3>(3 * i) -= (k * scale * m_weights(i)) * dir;
+    gradient.segment<3>(3 * i) -= (k * scale * (interaction ? w.weights(i) : 1.0)) * dir;
   }
 }
 
@@ -152,11 +161,23 @@ RowMatXi VolumePenaltyBlock::element_nodes() const { return m_triangles; }
 
 void VolumePenaltyBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter,
                                             double* values, bool project_psd) const {
-  VecX& g = m_volume_gradient;
-  const double v = volume_and_gradient(m_triangles, x, g, m_normals);
-  if (m_interacting) fill_weights(x, m_interaction, m_weights);
+  add_stiffness(x, nullptr, scatter, values, project_psd);
+}
+
+void VolumePenaltyBlock::add_interaction_hessian_values(const Eigen::Ref<const VecX>& x, const Interaction& interaction,
+                                                        const model::HessianScatter& scatter, double* values,
+                                                        bool project_psd) const {
+  add_stiffness(x, &interaction, scatter, values, project_psd);
+}
+
+void VolumePenaltyBlock::add_stiffness(const Eigen::Ref<const VecX>& x, const Interaction* interaction,
+                                       const model::HessianScatter& scatter, double* values, bool project_psd) const {
+  Scratch& w = scratch(m_k_bulk.size());
+  VecX& g = w.volume_gradient;
+  const double v = volume_and_gradient(m_triangles, x, g, w.normals);
+  if (interaction) fill_weights(x, *interaction, w.weights);
   // Node-diagonal blocks of the rank-one stiffness, added once per node through its first triangle.
-  std::vector<char>& done = m_done;
+  std::vector<char>& done = w.done;
   std::fill(done.begin(), done.end(), 0);
   const double pressure = m_bulk_modulus * (v - m_rest_volume) / m_rest_volume;
   Eigen::Matrix<double, 9, 9> h;
@@ -173,7 +194,7 @@ void VolumePenaltyBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, con
         // rank-one form with this coefficient.
         const double kb =
             m_force == VolumeForce::kNodal ? m_k_bulk(i) * m_normal_length(i) / m_rest_volume : m_k_bulk(i);
-        k = kb * m_weights(i) / std::max(gi.norm(), 1e-300);
+        k = kb * (interaction ? w.weights(i) : 1.0) / std::max(gi.norm(), 1e-300);
       }
       h.block<3, 3>(3 * a, 3 * a) += k * gi * gi.transpose();
     }

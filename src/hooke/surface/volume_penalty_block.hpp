@@ -23,12 +23,9 @@ enum class VolumeForce { kNodal, kPrinted, kEnergy };
 std::string_view volume_force_name(VolumeForce force);
 VolumeForce volume_force_from_name(std::string_view name);
 
-/// Where an interaction (a probe, a haptic device) pushes: the weights of Eq. 4 follow it.
-struct Interaction {
-  Vec3 point = Vec3::Zero();      ///< p_f, m
-  Vec3 direction = Vec3::Zero();  ///< direction of the interaction force F_f (any length > 0)
-  double radius = 0.0;            ///< radius of influence r, m (> 0)
-};
+/// Where an interaction (a probe, a haptic device) pushes: the weights of Eq. 4 follow it. It lives in the problem
+/// (model::Problem::interaction), not in the block.
+using Interaction = model::Interaction;
 
 /// Weights of Eq. 4 at positions x: w_i = ((p_i - p_f)/|p_i - p_f| . F^_f) cos(pi |p_i - p_f| / (2 r)) for
 /// nodes within r of p_f, 0 elsewhere. The printed "(p_i - p_f . F_f)/|p_i - p_f|" is read as the cosine of
@@ -60,24 +57,27 @@ class VolumePenaltyBlock final : public model::TermBlock {
   void add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter, double* values,
                           bool project_psd) const override;
 
-  /// Switches the weights of Eq. 4 on (they and the force directions (p_i - p_f)/|p_i - p_f| follow the
-  /// interaction) clear_interaction() goes back to w_i = 1 along N_i. Not thread-safe with a
-  /// concurrent evaluation of this block.
-  void set_interaction(const Interaction& interaction) const;
-  void clear_interaction() const;
-  /// The weights in use at x (all 1 without an interaction).
-  VecX weights(const Eigen::Ref<const VecX>& x) const;
+  /// Under an interaction the weights of Eq. 4 and the force directions (p_i - p_f)/|p_i - p_f| follow it (nodal
+  /// and printed readings; kEnergy ignores it); without one (add_gradient), w_i = 1 along the node normals N_i.
+  bool follows_interaction() const override { return m_force != VolumeForce::kEnergy; }
+  void add_interaction_gradient(const Eigen::Ref<const VecX>& x, const Interaction& interaction,
+                                Eigen::Ref<VecX> gradient) const override;
+  void add_interaction_hessian_values(const Eigen::Ref<const VecX>& x, const Interaction& interaction,
+                                      const model::HessianScatter& scatter, double* values,
+                                      bool project_psd) const override;
+  /// The weights at x under `interaction` (all 1 without one).
+  VecX weights(const Eigen::Ref<const VecX>& x, const Interaction* interaction = nullptr) const;
   VolumeForce force() const { return m_force; }
 
  private:
+  void add_forces(const Eigen::Ref<const VecX>& x, const Interaction* interaction, Eigen::Ref<VecX> gradient) const;
+  void add_stiffness(const Eigen::Ref<const VecX>& x, const Interaction* interaction,
+                     const model::HessianScatter& scatter, double* values, bool project_psd) const;
+
   RowMatXi m_triangles;
   double m_rest_volume, m_bulk_modulus;
   VecX m_k_bulk, m_normal_length;
   VolumeForce m_force;
-  mutable Interaction m_interaction;
-  mutable bool m_interacting = false;
-  mutable VecX m_volume_gradient, m_weights, m_normals;  // scratch, sized once
-  mutable std::vector<char> m_done;
 };
 
 }  // namespace hooke::surface

@@ -38,7 +38,7 @@ double IncrementalPotential::value(const VecX& z) {
 }
 
 void IncrementalPotential::gradient(const VecX& z, VecX& out) {
-  m_s.model().gradient(z, out);
+  m_s.model().gradient(z, out, m_s.problem.interaction_or_null());
   out -= m_s.f_total;
   if (m_w > 0.0) out += m_w * m_s.dyn.mass.cwiseProduct(z - m_x_hat);
   if (m_s.damped() && m_dt > 0.0) {
@@ -55,7 +55,7 @@ SparseMatrix& IncrementalPotential::newton_matrix(const VecX& z, bool project) {
   model::HessianAssembly& a = m_s.hessian_assembly();
   const bool stiffness_damping = m_dt > 0.0 && m_s.dyn.stiffness_damping > 0.0;
   if (stiffness_damping) m_s.rest_stiffness();  // before `a` is overwritten
-  a.assemble(z, project);
+  a.assemble(z, project, m_s.problem.interaction_or_null());
   double* values = a.matrix().valuePtr();
   if (stiffness_damping) {
     const double* k = m_s.rest_stiffness().valuePtr();

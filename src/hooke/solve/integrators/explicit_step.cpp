@@ -37,7 +37,7 @@ class ExplicitStep final : public IntegratorStep {
   // acc = M^-1 (f - dE/dx(x) - D w) on the free DOFs, 0 on the fixed ones.
   void acceleration(SimulationState& s, const VecX& w) {
     if (!s.gradient_valid) {
-      s.model().gradient(s.x, s.grad);
+      s.model().gradient(s.x, s.grad, s.problem.interaction_or_null());
       s.gradient_valid = true;
     }
     m_acc = s.f_total - s.grad;
