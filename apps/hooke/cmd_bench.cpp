@@ -59,6 +59,7 @@ int run_bench(const BenchCli& o) {
                             {"median_ms", t.median_ms},
                             {"p95_ms", t.p95_ms},
                             {"iterations", t.iterations},
+                            {"linear_iterations", t.linear_iterations},
                             {"error_vs_converged", t.error_vs_converged}});
     j["notes"] = report.notes;
     write_file_atomically(dir / "bench.json", [&](std::ostream& out) { out << j.dump(2) << "\n"; });

@@ -79,6 +79,12 @@ Action add_simulate_command(CLI::App& app) {
          "step, Baraff & Witkin), local-global, quasi-static")
       ->capture_default_str();
   cmd->add_option("--linear-solver", o->linear_solver, "Newton steps: cholesky or cg")->capture_default_str();
+  cmd->add_option("--cg-tolerance", o->run.simulator.newton.cg_tolerance,
+                  "cg: relative residual of the linear solves (implicit-euler-linearised: the whole step's)")
+      ->capture_default_str();
+  cmd->add_option("--newton-tolerance", o->run.simulator.newton.tolerance,
+                  "implicit-euler, quasi-static: |residual| / force scale to stop Newton")
+      ->capture_default_str();
   cmd->add_option("--global-solve", o->global_solve,
                   "local-global: direct (prefactored Cholesky) or chebyshev (Chebyshev-accelerated Jacobi)")
       ->capture_default_str();

@@ -36,7 +36,8 @@ struct StepTiming {
   std::string integrator;
   double dt = 0.0;  ///< s
   double median_ms = 0.0, p95_ms = 0.0;
-  double iterations = 0.0;  ///< solver iterations per step
+  double iterations = 0.0;         ///< solver iterations per step
+  double linear_iterations = 0.0;  ///< conjugate-gradient iterations per step (cg rows; 0 otherwise)
   /// Max node distance to implicit Euler converged tightly (Newton to 1e-12) after the same steps, relative to its
   /// largest displacement; -1 where the integrator solves another problem (explicit steps, quasi-static).
   double error_vs_converged = -1.0;
