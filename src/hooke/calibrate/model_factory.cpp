@@ -6,8 +6,6 @@
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/model/mass.hpp>
 #include <hooke/model/orientation_guard.hpp>
-#include <hooke/springs/spring_block.hpp>
-#include <hooke/springs/tet_volume_block.hpp>
 
 namespace hooke::calibrate {
 namespace {
@@ -111,10 +109,7 @@ BuiltModel build_model(const CalibratedModel& m) {
     out.model->add(fem::make_elastic_block(m.mesh, m.material));
     return out;
   }
-  const SpringModel& s = m.springs;
-  if (!s.pairs.empty()) out.model->add(std::make_unique<springs::SpringBlock>(d, s.pairs, s.stiffness, s.rest_length));
-  if (s.volume_tets.rows() > 0)
-    out.model->add(std::make_unique<springs::TetVolumeBlock>(s.volume_tets, s.volume_stiffness, s.rest_volume));
+  add_spring_terms(*out.model, m.springs);
   if (m.surface) {
     const SurfaceTerms& t = *m.surface;
     out.model->add(std::make_unique<surface::AnchorBlock>(out.model->rest_positions(), t.normals, t.k_normal, t.k_shear,

@@ -5,13 +5,19 @@
 
 namespace hooke::calibrate {
 
+void add_spring_terms(model::Model& model, const SpringModel& s) {
+  if (!s.pairs.empty())
+    model.add(std::make_unique<springs::SpringBlock>(model.dim(), s.pairs, s.stiffness, s.rest_length));
+  if (s.volume_tets.rows() > 0)
+    model.add(std::make_unique<springs::TetVolumeBlock>(s.volume_tets, s.volume_stiffness, s.rest_volume));
+}
+
 std::shared_ptr<model::Model> make_model(const mesh::Mesh& mesh, const SpringModel& s) {
   auto m = std::make_shared<model::Model>(mesh.dim(), Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size()));
-  m->add(std::make_unique<springs::SpringBlock>(mesh.dim(), s.pairs, s.stiffness, s.rest_length));
-  if (s.volume_tets.rows() > 0)
-    m->add(std::make_unique<springs::TetVolumeBlock>(s.volume_tets, s.volume_stiffness, s.rest_volume));
+  add_spring_terms(*m, s);
   // Springs alone admit a body turned inside out as an "equilibrium"; like the FEM, never accept one.
-  if (mesh.kind != mesh::ElementKind::kSurfaceTriangle) m->add(std::make_unique<model::OrientationGuard>(mesh));
+  if (mesh.kind != mesh::ElementKind::kSurfaceTriangle && mesh.element_count() > 0)
+    m->add(std::make_unique<model::OrientationGuard>(mesh));
   return m;
 }
 

@@ -18,6 +18,10 @@ struct SpringModel {
   VecX rest_volume;                       ///< V0 per tet, m^3
 };
 
+/// Adds the blocks of `springs` to `model`: a SpringBlock when there are springs, a TetVolumeBlock when there are
+/// volume terms. The one place where a SpringModel becomes term blocks (make_model and build_model use it).
+void add_spring_terms(model::Model& model, const SpringModel& springs);
+
 /// The model of `springs` on the rest positions of `mesh`: a SpringBlock plus, when present, a TetVolumeBlock,
 /// and an OrientationGuard on the mesh's elements (states with an inverted element are inadmissible).
 std::shared_ptr<model::Model> make_model(const mesh::Mesh& mesh, const SpringModel& springs);

@@ -189,6 +189,60 @@ struct NewtonSolver::Impl {
     f.gradient(z, grad);  // jacobian_times left the objective's force scale at a trial point
   }
 
+  // Per solve: the residual the kept factorisation last gave (modified Newton), the CG forcing term and the
+  // residual it was chosen at, and the objective at the iterate.
+  double previous = 0.0, eta = 0.1, last_residual = 0.0, phi = 0.0;
+
+  // The direction of iteration `it` at y into `delta`; false when none could be computed. `reuse`: from the kept
+  // factorisation (modified Newton) instead of a new one.
+  bool step_direction(NewtonObjective& f, const VecX& y, int it, double residual, bool reuse) {
+    if (cg()) {
+      // Inexact Newton (Eisenstat & Walker 1996, choice 2): the CG tolerance follows the residual's decrease, loose
+      // far from the solution, down to cg_tolerance near it; tightened when the step is no descent.
+      if (it > 0)
+        eta = std::clamp(0.9 * (residual / last_residual) * (residual / last_residual), opt.cg_tolerance, 0.1);
+      last_residual = residual;
+      if (!direction(f, y, grad, eta, delta)) return false;
+      return grad.dot(delta) < 0.0 || eta <= opt.cg_tolerance || direction(f, y, grad, opt.cg_tolerance, delta);
+    }
+    if (reuse) {
+      delta = -grad;
+      cholesky.solve_in_place(delta.data(), 1);
+      return true;
+    }
+    if (!direction(f, y, grad, 0.0, delta)) return false;
+    have_factor = true;
+    if (!f.exact_hessian() && opt.refine_approximate_steps) refine(f, y, grad, delta);
+    return true;
+  }
+
+  // Backtracking from y along delta into `trial`: Armijo on the objective (sufficient decrease 1e-4, 40 halvings),
+  // a smaller residual where the energy difference is round-off, or (no potential) a residual decrease.
+  bool line_search(NewtonObjective& f, const VecX& y, double slope, double residual) {
+    double alpha = 1.0;
+    for (int ls = 0; ls < 40; ++ls, alpha *= 0.5) {
+      trial = y + alpha * delta;
+      if (!f.conservative()) {
+        f.gradient(trial, grad_trial);
+        const double rt = grad_trial.norm();
+        if (std::isfinite(rt) && rt <= (1.0 - 1e-4 * alpha) * residual) return true;
+        continue;
+      }
+      const double p = f.value(trial);
+      if (!std::isfinite(p)) continue;
+      bool accept = p <= phi + 1e-4 * alpha * slope;
+      if (!accept && std::abs(p - phi) <= 1e-12 * std::abs(phi)) {
+        f.gradient(trial, grad_trial);
+        accept = grad_trial.norm() < residual;
+      }
+      if (accept) {
+        phi = p;
+        return true;
+      }
+    }
+    return false;
+  }
+
   NewtonReport solve(NewtonObjective& f, VecX& y, std::vector<double>* history) {
     NewtonReport r;
     const Eigen::Index nd = y.size();
@@ -196,11 +250,9 @@ struct NewtonSolver::Impl {
       if (w->size() != nd) w->setZero(nd);
     if (delta.size() != nd) delta.setZero(nd);
     cg_iterations = 0;
-    const bool potential = f.conservative();
-    double phi = potential ? f.value(y) : 0.0;
-    double previous = std::numeric_limits<double>::infinity();
-    double eta = 0.1, last_residual = 0.0;  // cg: forcing term and the residual it was chosen at
-    const double step_floor = opt.step_tolerance * f.size();
+    phi = f.conservative() ? f.value(y) : 0.0;
+    previous = std::numeric_limits<double>::infinity();
+    eta = 0.1;
     int it = 0;
     for (; it < opt.max_iterations; ++it) {
       f.gradient(y, grad);
@@ -215,72 +267,32 @@ struct NewtonSolver::Impl {
       // Modified Newton: keep the last factorisation while it still reduces the residual at least fourfold per
       // iteration; refactorise when it does not, when it gives no descent, or when its line search fails.
       const bool reuse = !cg() && opt.reuse_factorization && have_factor && r.residual <= 0.25 * previous;
-      if (cg()) {
-        // Inexact Newton (Eisenstat & Walker 1996, choice 2): the CG tolerance follows the residual's decrease,
-        // loose far from the solution, down to cg_tolerance near it; tightened when the step is no descent.
-        if (it > 0)
-          eta = std::clamp(0.9 * (r.residual / last_residual) * (r.residual / last_residual), opt.cg_tolerance, 0.1);
-        last_residual = r.residual;
-        if (!direction(f, y, grad, eta, delta)) break;
-        if (!(grad.dot(delta) < 0.0) && eta > opt.cg_tolerance && !direction(f, y, grad, opt.cg_tolerance, delta))
-          break;
-      } else if (reuse) {
-        delta = -grad;
-        cholesky.solve_in_place(delta.data(), 1);
-      } else {
-        if (!direction(f, y, grad, 0.0, delta)) break;
-        have_factor = true;
-        if (!f.exact_hessian() && opt.refine_approximate_steps) refine(f, y, grad, delta);
-      }
+      if (!step_direction(f, y, it, r.residual, reuse)) break;
       previous = reuse ? r.residual : std::numeric_limits<double>::infinity();
       double slope = grad.dot(delta);
-      if (!(slope < 0.0)) {
-        if (reuse) {
-          have_factor = false;
-          continue;
-        }
-        delta = -grad;  // no descent from the (refined) direction: steepest descent
+      if (!(slope < 0.0) && reuse) {
+        have_factor = false;
+        continue;
+      }
+      if (!(slope < 0.0)) {  // no descent from the (refined) direction: steepest descent
+        delta = -grad;
         slope = -grad.squaredNorm();
       }
-      if (delta.cwiseAbs().maxCoeff() <= step_floor) {  // a step below round-off: nothing more to gain
+      if (delta.cwiseAbs().maxCoeff() <= opt.step_tolerance * f.size()) {  // below round-off: nothing more to gain
         y += delta;
         f.gradient(y, grad);
         r.residual = grad.norm();
         r.iterations = it + 1;
         r.converged = true;
-        r.linear_iterations = cg_iterations;
-        return r;
+        break;
       }
-      double alpha = 1.0;
-      bool accepted = false;
-      for (int ls = 0; ls < 40 && !accepted; ++ls, alpha *= 0.5) {
-        trial = y + alpha * delta;
-        if (potential) {
-          const double p = f.value(trial);
-          if (std::isfinite(p) && p <= phi + 1e-4 * alpha * slope) {
-            phi = p;
-            accepted = true;
-          } else if (std::isfinite(p) && std::abs(p - phi) <= 1e-12 * std::abs(phi)) {
-            // Near the solution the decrease drowns in round-off; a smaller residual is then enough.
-            f.gradient(trial, grad_trial);
-            if (grad_trial.norm() < r.residual) {
-              phi = p;
-              accepted = true;
-            }
-          }
-        } else {
-          f.gradient(trial, grad_trial);
-          const double rt = grad_trial.norm();
-          accepted = std::isfinite(rt) && rt <= (1.0 - 1e-4 * alpha) * r.residual;
-        }
-        if (accepted) break;
-      }
-      if (!accepted) {
-        if (!reuse) break;
+      if (line_search(f, y, slope, r.residual)) {
+        y = trial;
+      } else if (reuse) {
         have_factor = false;
-        continue;
+      } else {
+        break;
       }
-      y = trial;
     }
     if (!r.converged) {
       f.gradient(y, grad);

@@ -8,6 +8,7 @@
 #include <hooke/solve/stability.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
 #include <sstream>
+#include <utility>
 
 namespace hooke::solve {
 namespace {
@@ -82,6 +83,9 @@ class StaticObjective final : public NewtonObjective {
 
 // Newton at one load factor from x (updated in place), and the stability test, over one objective.
 struct LoadStepper {
+  LoadStepper(StaticObjective& f, const detail::FreeMap& free, SolveReport& r, const NewtonOptions& options)
+      : objective(f), map(free), report(r), newton(options), stability_factor(options.backend) {}
+
   StaticObjective& objective;
   const detail::FreeMap& map;
   SolveReport& report;
@@ -109,6 +113,41 @@ struct LoadStepper {
     const bool ok = stability_factor.factorize(objective.free_tangent(x, map));
     report.factorization_seconds += seconds_since(t0);
     return ok;
+  }
+
+  // The last accepted state and its load factor.
+  VecX x_stable;
+  double lambda_stable = 0.0;
+
+  void accept(VecX x, double lambda) {
+    x_stable = std::move(x);
+    lambda_stable = lambda;
+    ++report.load_steps;
+  }
+
+  // Newton at the full load from an initial guess (its free DOFs); accepted when it converges (stably).
+  void try_start(const VecX& start, bool check_stability) {
+    VecX x = x_stable;
+    for (const int i : map.free) x(i) = start(i);
+    if (x.allFinite() && solve_step(x, 1.0) && (!check_stability || stable_at(x))) accept(std::move(x), 1.0);
+  }
+
+  // Stability is lost between lambda_stable and `unstable`: bisects `steps` times, accepting the stable states
+  // on the way. Returns the bracket [lo, hi].
+  std::pair<double, double> bracket_instability(double unstable, int steps) {
+    double lo = lambda_stable, hi = unstable;
+    for (int b = 0; b < steps; ++b) {
+      const double mid = 0.5 * (lo + hi);
+      VecX xm = x_stable;
+      if (solve_step(xm, mid) && stable_at(xm)) {
+        lo = mid;
+        x_stable = std::move(xm);
+        lambda_stable = mid;
+      } else {
+        hi = mid;
+      }
+    }
+    return {lo, hi};
   }
 };
 
@@ -192,11 +231,12 @@ StaticResult static_equilibrium(const model::Problem& problem, const StaticOptio
   rep.free_dofs = map.size();
   rep.reference_force = problem.external_force.norm();
   StaticObjective objective(problem, map, rep);
-  LoadStepper newton{objective, map, rep, NewtonSolver(options.newton), SparseCholesky(options.newton.backend)};
+  LoadStepper newton(objective, map, rep, options.newton);
   rep.backend = std::string(newton.newton.backend_name());
 
-  VecX x_stable = model::initial_positions(problem);
-  double lambda_stable = 0.0;
+  newton.x_stable = model::initial_positions(problem);
+  const VecX& x_stable = newton.x_stable;
+  const double& lambda_stable = newton.lambda_stable;
   double step = 1.0 / std::max(1, options.initial_load_steps);
   auto finish = [&](SolveStatus status, std::string message) {
     rep.status = status;
@@ -220,13 +260,7 @@ StaticResult static_equilibrium(const model::Problem& problem, const StaticOptio
     if (options.start.size() != m.dof_count())
       throw InvalidArgument("static_equilibrium: the initial guess has " + std::to_string(options.start.size()) +
                             " entries, the model " + std::to_string(m.dof_count()) + " DOFs");
-    VecX x = x_stable;
-    for (const int i : map.free) x(i) = options.start(i);
-    if (x.allFinite() && newton.solve_step(x, 1.0) && (!options.check_stability || newton.stable_at(x))) {
-      x_stable = std::move(x);
-      lambda_stable = 1.0;
-      ++rep.load_steps;
-    }
+    newton.try_start(options.start, options.check_stability);
   }
   while (lambda_stable < 1.0) {
     const double lambda = std::min(1.0, lambda_stable + step);
@@ -245,19 +279,7 @@ StaticResult static_equilibrium(const model::Problem& problem, const StaticOptio
       continue;
     }
     if (options.check_stability && !newton.stable_at(x)) {
-      // Bracket the load factor where the tangent stops being positive definite.
-      double lo = lambda_stable, hi = lambda;
-      for (int b = 0; b < options.bisection_steps; ++b) {
-        const double mid = 0.5 * (lo + hi);
-        VecX xm = x_stable;
-        if (newton.solve_step(xm, mid) && newton.stable_at(xm)) {
-          lo = mid;
-          x_stable = std::move(xm);
-          lambda_stable = mid;
-        } else {
-          hi = mid;
-        }
-      }
+      const auto [lo, hi] = newton.bracket_instability(lambda, options.bisection_steps);
       rep.critical_load_factor = 0.5 * (lo + hi);
       return finish(SolveStatus::kUnstable,
                     "stability is lost at load factor " + format_double(rep.critical_load_factor) + " (between " +
@@ -266,9 +288,7 @@ StaticResult static_equilibrium(const model::Problem& problem, const StaticOptio
                         "stable one, at load factor " +
                         format_double(lo));
     }
-    x_stable = std::move(x);
-    lambda_stable = lambda;
-    ++rep.load_steps;
+    newton.accept(std::move(x), lambda);
     step = std::min(step * 1.5, 1.0);
   }
   return finish(SolveStatus::kConverged, "converged in " + std::to_string(rep.iterations) + " Newton iterations over " +
