@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs a built hooke into a temporary prefix and builds examples/calibrate_and_simulate against the installed
-# package twice, with find_package(hooke CONFIG) and with pkg-config, never against the build tree; runs both.
+# package twice, with find_package(hooke CONFIG) and with pkg-config, never against the build tree; runs both; and
+# imports the installed Python package from the prefix.
 # Usage: scripts/check_install.sh BUILD_DIR
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,4 +19,12 @@ g++ -O2 examples/calibrate_and_simulate/main.cpp -o "$tmp/pc_example" $(pkg-conf
 "$tmp/pc_example" data/meshes/cylinder.msh 14630 0.25 > "$tmp/pc.out"
 grep -q "tip node" "$tmp/cmake.out"
 cmp "$tmp/cmake.out" "$tmp/pc.out"
+# The Python package from the same prefix (the folder /usr/bin/python3 searches under /usr).
+if [ -d "$tmp/prefix/lib/python3/dist-packages/hooke" ]; then
+  PYTHONPATH="$tmp/prefix/lib/python3/dist-packages" /usr/bin/python3 -c "
+import hooke
+m = hooke.calibrate(hooke.read_mesh('data/meshes/cylinder.msh'), hooke.Material(14630.0, 0.25))
+assert m.pairs.shape[0] > 0 and hooke.__file__.startswith('$tmp/prefix'), hooke.__file__
+print('check_install.sh: import hooke from the prefix:', m)"
+fi
 echo "check_install.sh: the installed package builds and runs with CMake and with pkg-config"

@@ -11,7 +11,7 @@ core=(
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread libtbb-dev
   libcli11-dev libfmt-dev libspdlog-dev nlohmann-json3-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3-dev python3-numpy python3-pytest python3-matplotlib python3-meshio pybind11-dev
+  python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib python3-meshio pybind11-dev
 )
 extra=()
 for arg in "$@"; do

@@ -1,0 +1,106 @@
+"""hooke: mass-spring models calibrated from Young's modulus and Poisson's ratio, checked against FEM.
+
+The compiled core is ``hooke._hooke``; this layer adds Python warnings for the methods' validity warnings, the
+scipy / meshio conversions, and checks of arguments the core cannot see.
+
+Units are SI throughout: metres, pascals, newtons, kilograms, seconds.
+"""
+import warnings as _warnings
+
+from ._hooke import (  # noqa: F401
+    Comparison,
+    Error,
+    InvalidArgument,
+    InvalidMaterial,
+    InvalidMesh,
+    IoError,
+    Material,
+    Mesh,
+    Model,
+    ParseError,
+    Problem,
+    Simulator,
+    SolveReport,
+    StepReport,
+    SolverFailure,
+    __version__,
+    certify,
+    compare,
+    cube_surface,
+    linear_static,
+    method_equation,
+    methods,
+    read_mesh,
+    read_model,
+    rectangle_triangles,
+    static_equilibrium,
+    tet_box,
+    tet_cylinder,
+    uv_sphere_surface,
+    write_mesh,
+    write_model,
+)
+from . import _hooke
+
+SpringModel = Model
+
+
+class ValidityWarning(UserWarning):
+    """A calibration method used outside the conditions its derivation assumes (e.g. Lloyd et al.'s springs away
+    from nu = 1/4)."""
+
+
+def calibrate(mesh, material, method="lloyd-tet", density=1000.0):
+    """Calibrates the model `method` (one of hooke.methods()) on `mesh` for `material`.
+
+    mesh      hooke.Mesh, coordinates in m (a closed surface-triangle mesh for method="surface")
+    material  hooke.Material (E in Pa, nu; thickness in m for 2D meshes)
+    density   kg/m^3, for the lumped masses
+
+    Returns a hooke.Model: .pairs (S, 2), .stiffness (S,) N/m, .rest_length (S,) m, .volume_tets (T, 4),
+    .volume_stiffness (T,) J, .rest_volume (T,) m^3, .masses (dim * N,) kg. The method's validity warnings are
+    issued as hooke.ValidityWarning (and kept in .warnings).
+    """
+    if not isinstance(mesh, Mesh):
+        raise TypeError("calibrate: mesh must be a hooke.Mesh")
+    if not isinstance(material, Material):
+        raise TypeError("calibrate: material must be a hooke.Material")
+    model = _hooke._calibrate(mesh, material, method, float(density))
+    for w in model.warnings:
+        _warnings.warn(w, ValidityWarning, stacklevel=2)
+    return model
+
+
+def stiffness(problem):
+    """The model's Hessian at rest (its linearised stiffness), N/m, as a scipy.sparse.csr_matrix (dim*N square).
+
+    Needs scipy."""
+    import scipy.sparse
+
+    data, indices, indptr, shape = problem.stiffness_csr()
+    return scipy.sparse.csr_matrix((data, indices, indptr), shape=shape)
+
+
+def mesh_from_meshio(m):
+    """A hooke.Mesh from a meshio.Mesh (its first cell block of tetra, triangle or quad)."""
+    kinds = {"tetra": "tet", "quad": "quad"}
+    for block in m.cells:
+        if block.type in kinds or block.type == "triangle":
+            if block.type == "triangle":
+                planar = m.points.shape[1] == 2 or abs(m.points[:, 2]).max() == 0.0
+                kind = "triangle" if planar else "surface-triangle"
+                points = m.points[:, :2] if planar else m.points
+            else:
+                kind = kinds[block.type]
+                points = m.points if kind == "tet" else m.points[:, :2]
+            return Mesh(kind, points, block.data.astype("int32"), "meshio")
+    raise ValueError("mesh_from_meshio: no tetra, triangle or quad cells")
+
+
+def mesh_to_meshio(mesh):
+    """The hooke.Mesh as a meshio.Mesh (needs meshio)."""
+    import meshio
+    import numpy
+
+    cell = {"tet": "tetra", "triangle": "triangle", "surface-triangle": "triangle", "quad": "quad"}[mesh.kind]
+    return meshio.Mesh(numpy.array(mesh.points), [(cell, numpy.array(mesh.elements))])

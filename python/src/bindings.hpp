@@ -1,0 +1,15 @@
+#pragma once
+// One define_<concept>(module) per binding file (STYLE.md: python/src mirrors src/hooke), called from bindings.cpp.
+#include <pybind11/pybind11.h>
+
+namespace hooke::python {
+
+void define_error(pybind11::module_& m);
+void define_mesh(pybind11::module_& m);
+void define_material(pybind11::module_& m);
+void define_model(pybind11::module_& m);
+void define_compare(pybind11::module_& m);
+void define_static_equilibrium(pybind11::module_& m);
+void define_simulator(pybind11::module_& m);
+
+}  // namespace hooke::python

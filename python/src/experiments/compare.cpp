@@ -1,0 +1,55 @@
+// hooke.compare: a calibrated model against the FEM reference under one load case, both displacement fields and
+// the node errors.
+#include <pybind11/stl.h>
+#include <bindings.hpp>
+#include <core/arrays.hpp>
+#include <hooke/experiments/compare.hpp>
+
+namespace py = pybind11;
+
+namespace hooke::python {
+
+void define_compare(py::module_& m) {
+  using experiments::Comparison;
+  const auto dim = [](const Comparison& c) { return c.fem_mesh.dim(); };
+  const auto fem = [](Comparison& c) -> VecX& { return c.fem_positions; };
+  const auto model_x = [](Comparison& c) -> VecX& { return c.spring_positions; };
+  const auto error = [](Comparison& c) -> VecX& { return c.node_error; };
+  py::class_<Comparison>(m, "Comparison", "A model's static answer beside the FEM reference's.")
+      .def_property_readonly("fem_positions", rows_property<Comparison>(fem, dim),
+                             "(N, dim) FEM equilibrium at the model's nodes, m")
+      .def_property_readonly("model_positions", rows_property<Comparison>(model_x, dim),
+                             "(N, dim) the model's equilibrium, m")
+      .def_property_readonly("node_error", flat_property<Comparison>(error, false),
+                             "(N,) |x_model - x_fem| per node, m")
+      .def_readonly("max_error", &Comparison::max_error, "m")
+      .def_readonly("mean_error", &Comparison::mean_error, "m")
+      .def_readonly("relative_l2", &Comparison::relative_l2, "||x_model - x_fem|| / ||x_fem - X||")
+      .def_readonly("fem_report", &Comparison::fem_report)
+      .def_readonly("model_report", &Comparison::spring_report)
+      .def_property_readonly(
+          "traction", [](const Comparison& c) { return c.load.traction_pa; }, "Pa");
+  m.def(
+      "compare",
+      [](const calibrate::CalibratedModel& model, const std::string& load, const py::object& strain,
+         const py::object& traction, const std::string& reference, int layers) {
+        experiments::CompareOptions o;
+        o.load = experiments::load_kind_from_name(load);
+        o.reference = material::law_from_name(reference);
+        if (strain.is_none() == traction.is_none())
+          throw py::value_error("compare: give exactly one of strain and traction (Pa)");
+        if (!strain.is_none()) o.strain = strain.cast<double>();
+        if (!traction.is_none()) o.traction_pa = traction.cast<double>();
+        if (!(o.strain > 0.0 || o.traction_pa > 0.0) || !std::isfinite(o.strain) || !std::isfinite(o.traction_pa))
+          throw py::value_error("compare: the strain or traction must be a finite number > 0");
+        py::gil_scoped_release release;
+        return experiments::compare_calibrated(model, o, layers);
+      },
+      py::arg("model"), py::arg("load") = "stretch", py::arg("strain") = py::none(), py::arg("traction") = py::none(),
+      py::arg("reference") = "linear", py::arg("layers") = 4,
+      "The model and the FEM (law `reference`: linear, stvk, neohookean) under the load case 'stretch', 'compress' "
+      "or 'shear' at mean linear-FEM `strain` or `traction` (Pa); the surface model against tets of `layers` "
+      "layers. Returns a Comparison.");
+}
+
+}  // namespace hooke::python

@@ -1,0 +1,34 @@
+// hooke.Material: a linear-elastic (or StVK / Neo-Hookean, for the FEM model) material in SI units.
+#include <bindings.hpp>
+#include <cmath>
+#include <hooke/material/material.hpp>
+#include <limits>
+
+namespace py = pybind11;
+
+namespace hooke::python {
+
+void define_material(py::module_& m) {
+  py::class_<material::Material>(m, "Material", "E (Pa), nu, the law, and a thickness (m) for 2D meshes.")
+      .def(py::init([](double young, double poisson, const py::object& thickness, const std::string& law) {
+             material::Material mat{material::law_from_name(law), young, poisson, material::Plane::kStress,
+                                    thickness.is_none() ? 1.0 : thickness.cast<double>()};
+             material::validate(mat);
+             return mat;
+           }),
+           py::arg("E"), py::arg("nu"), py::arg("thickness") = py::none(), py::arg("law") = "linear",
+           "Material(E, nu, thickness=None, law='linear'): Young's modulus E in Pa (> 0), Poisson's ratio nu in "
+           "(-1, 0.5), plate thickness in m for 2D meshes (default 1), law 'linear', 'stvk' or 'neohookean' (used "
+           "by the 'fem' model). Raises InvalidMaterial out of range.")
+      .def_readonly("E", &material::Material::youngs_modulus)
+      .def_readonly("nu", &material::Material::poisson_ratio)
+      .def_readonly("thickness", &material::Material::thickness)
+      .def_property_readonly("law",
+                             [](const material::Material& mat) { return std::string(material::law_name(mat.law)); })
+      .def("__repr__", [](const material::Material& mat) {
+        return "<hooke.Material E=" + std::to_string(mat.youngs_modulus) +
+               " Pa, nu=" + std::to_string(mat.poisson_ratio) + ", " + std::string(material::law_name(mat.law)) + ">";
+      });
+}
+
+}  // namespace hooke::python

@@ -1,0 +1,101 @@
+// Meshes: hooke.Mesh with numpy views of its nodes and elements (no copies), reading and writing by extension, and
+// the generators.
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+#include <bindings.hpp>
+#include <core/arrays.hpp>
+#include <hooke/core/units.hpp>
+#include <hooke/io/mesh_io.hpp>
+#include <hooke/mesh/generators.hpp>
+#include <hooke/mesh/validate.hpp>
+
+namespace py = pybind11;
+
+namespace hooke::python {
+namespace {
+
+mesh::ElementKind kind_from_name(const std::string& name) {
+  for (auto k : {mesh::ElementKind::kTriangle, mesh::ElementKind::kQuad, mesh::ElementKind::kTet,
+                 mesh::ElementKind::kSurfaceTriangle})
+    if (mesh::element_kind_name(k) == name) return k;
+  throw py::value_error("kind: unknown element kind '" + name + "' (triangle, quad, tet, surface-triangle)");
+}
+
+}  // namespace
+
+void define_mesh(py::module_& m) {
+  py::class_<mesh::Mesh>(m, "Mesh", "A mesh of one element kind; coordinates in metres.")
+      .def(py::init([](const std::string& kind, const py::object& points, const py::object& elements,
+                       const std::string& source) {
+             const mesh::ElementKind k = kind_from_name(kind);
+             mesh::Mesh mesh =
+                 mesh::make_mesh(k, matrix_argument(points, "points", -1, mesh::dimension(k)),
+                                 index_argument(elements, "elements", mesh::nodes_per_element(k)), source);
+             mesh::validate(mesh);
+             return mesh;
+           }),
+           py::arg("kind"), py::arg("points"), py::arg("elements"), py::arg("source") = "",
+           "Mesh(kind, points, elements): kind 'triangle', 'quad', 'tet' or 'surface-triangle'; points (N, dim) "
+           "in m; elements (M, k) 0-based node indices. Validated (inverted elements reoriented, degenerate ones "
+           "raise InvalidMesh).")
+      .def_property_readonly(
+          "points",
+          [](py::object self) {
+            auto& mesh = self.cast<mesh::Mesh&>();
+            return view(mesh.nodes.data(), mesh.nodes.rows(), mesh.nodes.cols(), self, true);
+          },
+          "(N, dim) node positions in m: a writable view of the mesh's own array (no copy).")
+      .def_property_readonly(
+          "elements",
+          [](py::object self) {
+            auto& mesh = self.cast<mesh::Mesh&>();
+            return view(mesh.elements.data(), mesh.elements.rows(), mesh.elements.cols(), self, false);
+          },
+          "(M, k) 0-based node indices: a read-only view (editing it could break the mesh's validity).")
+      .def_property_readonly("kind", [](const mesh::Mesh& mesh) { return std::string(element_kind_name(mesh.kind)); })
+      .def_property_readonly("dim", &mesh::Mesh::dim)
+      .def_property_readonly("node_count", &mesh::Mesh::node_count)
+      .def_property_readonly("element_count", &mesh::Mesh::element_count)
+      .def_readonly("source", &mesh::Mesh::source)
+      .def("__repr__", [](const mesh::Mesh& mesh) {
+        return "<hooke.Mesh " + std::string(element_kind_name(mesh.kind)) + ", " + std::to_string(mesh.node_count()) +
+               " nodes, " + std::to_string(mesh.element_count()) + " elements>";
+      });
+
+  m.def(
+      "read_mesh",
+      [](const std::filesystem::path& path, const std::string& unit, bool validate) {
+        io::ReadOptions o;
+        o.metres_per_unit = metres_per_unit(unit);
+        o.validate = validate;
+        py::gil_scoped_release release;
+        return io::read_mesh(path, o);
+      },
+      py::arg("path"), py::arg("unit") = "m", py::arg("validate") = true,
+      "Reads .msh, .vtu, .node/.ele/.face, .obj, .off or .stl; coordinates scaled from `unit` (m, cm, mm) to m. "
+      "Raises ParseError (with .file, .line), IoError or InvalidMesh (with .element).");
+  m.def(
+      "write_mesh",
+      [](const std::filesystem::path& path, const mesh::Mesh& mesh, bool binary) {
+        io::WriteOptions o;
+        o.binary = binary;
+        io::write_mesh(path, mesh, o);
+      },
+      py::arg("path"), py::arg("mesh"), py::arg("binary") = false,
+      "Writes the mesh in the format of the extension, atomically (a temporary file renamed when complete).");
+  m.def("tet_box", &mesh::tet_box, py::arg("lx"), py::arg("ly"), py::arg("lz"), py::arg("nx"), py::arg("ny"),
+        py::arg("nz"), "A box [0, lx] x [0, ly] x [0, lz] (m) of nx x ny x nz cells, six tets per cell.");
+  m.def("tet_cylinder", &mesh::tet_cylinder, py::arg("radius"), py::arg("height"), py::arg("n"), py::arg("layers"),
+        "A tet cylinder of radius and height (m) on the z axis: an O-grid cross-section with n cells around, "
+        "`layers` layers.");
+  m.def(
+      "rectangle_triangles", [](double w, double h, int nx, int ny) { return mesh::rectangle_triangles(w, h, nx, ny); },
+      py::arg("width"), py::arg("height"), py::arg("nx"), py::arg("ny"),
+      "A w x h rectangle (m) of nx x ny cells, two triangles each.");
+  m.def("cube_surface", &mesh::cube_surface, py::arg("n"), py::arg("size"),
+        "The closed triangulated surface of a cube of edge `size` (m), n x n squares per face.");
+  m.def("uv_sphere_surface", &mesh::uv_sphere_surface, py::arg("rings"), py::arg("segments"), py::arg("radius"),
+        "A closed UV sphere surface of `radius` (m).");
+}
+
+}  // namespace hooke::python

@@ -1,0 +1,31 @@
+#include <hooke/core/error.hpp>
+#include <solve/problem.hpp>
+#include <string>
+
+namespace hooke::python {
+
+void ProblemData::fix_nodes(const std::vector<int>& nodes) {
+  for (int n : nodes)
+    if (n < 0 || n >= problem.model->node_count())
+      throw InvalidArgument("fix_nodes: node " + std::to_string(n) + " is not in the model (it has " +
+                            std::to_string(problem.model->node_count()) + " nodes)");
+  model::fix_nodes(problem, nodes);
+}
+
+void ProblemData::apply_load(experiments::LoadKind kind, double traction, double strain) {
+  if (strain != 0.0 && !(strain > 0.0 && std::isfinite(strain)))
+    throw InvalidArgument("apply_load: the strain must be a finite number > 0");
+  if (!std::isfinite(traction)) throw InvalidArgument("apply_load: the traction must be finite");
+  const double t =
+      strain > 0.0 ? experiments::traction_for_strain(model.mesh, {model.material}, kind, strain) : traction;
+  experiments::apply(experiments::make_load_case(model.mesh, kind, t, model.material.thickness), problem);
+}
+
+pybind11::array_t<double> ProblemData::rows(const VecX& flat) const {
+  const int d = problem.model->dim();
+  pybind11::array_t<double> a({static_cast<pybind11::ssize_t>(flat.size() / d), static_cast<pybind11::ssize_t>(d)});
+  std::copy(flat.data(), flat.data() + flat.size(), a.mutable_data());
+  return a;
+}
+
+}  // namespace hooke::python

@@ -1,0 +1,26 @@
+#pragma once
+// What a Python hooke.Problem holds: the calibrated model (for load cases and masses), its built term blocks and
+// the solver's problem.
+#include <pybind11/numpy.h>
+#include <hooke/calibrate/model_factory.hpp>
+#include <hooke/experiments/load_case.hpp>
+#include <hooke/model/problem.hpp>
+
+namespace hooke::python {
+
+struct ProblemData {
+  calibrate::CalibratedModel model;
+  model::Problem problem;
+
+  explicit ProblemData(const calibrate::CalibratedModel& m)
+      : model(m), problem(model::make_problem(calibrate::build_model(m).model)) {
+    problem.external_force = VecX::Zero(problem.model->dof_count());
+  }
+  void fix_nodes(const std::vector<int>& nodes);
+  // The load case `kind` at `traction` (Pa) or, when strain > 0, at the traction giving that mean linear-FEM strain.
+  void apply_load(experiments::LoadKind kind, double traction, double strain);
+  // Flat positions as an (N, dim) array (a copy).
+  pybind11::array_t<double> rows(const VecX& flat) const;
+};
+
+}  // namespace hooke::python
