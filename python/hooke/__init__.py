@@ -81,6 +81,19 @@ def stiffness(problem):
     return scipy.sparse.csr_matrix((data, indices, indptr), shape=shape)
 
 
+def reproduce(paper, out_dir, meshes=None):
+    """Runs a paper's experiments ("lloyd2007": Sec. 5, Figs. 1 and 3; "arnab2008": Tables 1-2, Figs. 8-12), writes
+    <out_dir>/<paper>.md, <paper>.json and the figure specs (figures/*.json; `hooke reproduce` renders them), and
+    returns the JSON report as a dict (every number of the report). `meshes`: the folder of the committed meshes
+    (default: the source tree's data/meshes)."""
+    import json
+    import pathlib
+
+    out = pathlib.Path(out_dir)
+    _hooke._reproduce(paper, out, pathlib.Path(meshes) if meshes else pathlib.Path(_hooke._default_mesh_dir))
+    return json.loads((out / (paper + ".json")).read_text())
+
+
 def mesh_from_meshio(m):
     """A hooke.Mesh from a meshio.Mesh (its first cell block of tetra, triangle or quad)."""
     kinds = {"tetra": "tet", "quad": "quad"}

@@ -10,6 +10,7 @@ PYBIND11_MODULE(_hooke, m) {
   hooke::python::define_material(m);
   hooke::python::define_model(m);
   hooke::python::define_compare(m);
+  hooke::python::define_reproduce(m);
   hooke::python::define_static_equilibrium(m);
   hooke::python::define_simulator(m);
 }

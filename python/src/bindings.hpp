@@ -9,6 +9,7 @@ void define_mesh(pybind11::module_& m);
 void define_material(pybind11::module_& m);
 void define_model(pybind11::module_& m);
 void define_compare(pybind11::module_& m);
+void define_reproduce(pybind11::module_& m);
 void define_static_equilibrium(pybind11::module_& m);
 void define_simulator(pybind11::module_& m);
 

@@ -85,3 +85,13 @@ def test_certify_matches_compare():
     assert c.node_error.shape == (mesh.node_count,)
     assert c.fem_positions.shape == (mesh.node_count, 3)
     np.testing.assert_allclose(np.linalg.norm(c.model_positions - c.fem_positions, axis=1), c.node_error)
+
+
+def test_reproduce_arnab2008_returns_the_report_as_a_dict(tmp_path):
+    report = hooke.reproduce("arnab2008", tmp_path)
+    assert (tmp_path / "arnab2008.md").exists()
+    table1 = report["table1"]
+    assert len(table1) >= 3
+    assert all(abs(row["deviation_percent"]) < 5.0 for row in table1)  # the paper's Table 1 within a few percent
+    with pytest.raises(hooke.InvalidArgument):
+        hooke.reproduce("smith1999", tmp_path)
