@@ -156,8 +156,10 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
       const bool newton =
           run.integrator == solve::Integrator::kImplicitEuler || run.integrator == solve::Integrator::kQuasiStatic;
       if ((factorises || newton) && size == 2) {
-        report.notes.push_back(std::string(run.name) + " skipped" + on + " (a sparse factorisation of " +
-                               std::to_string(3 * nodes) + " DOFs per Newton iteration)");
+        report.notes.push_back(
+            std::string(run.name) + " skipped" + on +
+            (factorises ? " (a sparse factorisation of " + std::to_string(3 * nodes) + " DOFs per Newton iteration)"
+                        : " (several Newton iterations of " + std::to_string(3 * nodes) + "-DOF CG solves per step)"));
         continue;
       }
       solve::SimulatorOptions o;
@@ -182,7 +184,12 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
         report.notes.push_back(std::string(run.name) + on + " not reported: " + why);
         continue;
       }
-      StepTiming t{nodes, run.name, dt, quantile(ms, 0.5), quantile(ms, 0.95), iterations / options.steps,
+      StepTiming t{nodes,
+                   run.name,
+                   dt,
+                   quantile(ms, 0.5),
+                   quantile(ms, 0.95),
+                   iterations / options.steps,
                    linear_iterations / options.steps};
       if (!is_explicit(run.integrator) && run.integrator != solve::Integrator::kQuasiStatic && size < 2) {
         if (reference.size() == 0) reference = converged_reference(problem, dynamics, options.dt, options.steps);
