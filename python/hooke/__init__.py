@@ -5,6 +5,7 @@ scipy / meshio conversions, and checks of arguments the core cannot see.
 
 Units are SI throughout: metres, pascals, newtons, kilograms, seconds.
 """
+import logging as _logging
 import warnings as _warnings
 
 from ._hooke import (  # noqa: F401
@@ -27,6 +28,7 @@ from ._hooke import (  # noqa: F401
     certify,
     compare,
     cube_surface,
+    equilateral_membrane,
     linear_static,
     method_equation,
     methods,
@@ -41,8 +43,12 @@ from ._hooke import (  # noqa: F401
     write_model,
 )
 from . import _hooke
+from . import fem  # noqa: F401  (hooke.fem.solve)
 
 SpringModel = Model
+
+# The library's log messages reach the "hooke" logger; silent unless the application configures logging.
+_logging.getLogger("hooke").addHandler(_logging.NullHandler())
 
 
 class ValidityWarning(UserWarning):
@@ -117,3 +123,7 @@ def mesh_to_meshio(mesh):
 
     cell = {"tet": "tetra", "triangle": "triangle", "surface-triangle": "triangle", "quad": "quad"}[mesh.kind]
     return meshio.Mesh(numpy.array(mesh.points), [(cell, numpy.array(mesh.elements))])
+
+
+Mesh.from_meshio = staticmethod(mesh_from_meshio)
+Mesh.to_meshio = mesh_to_meshio

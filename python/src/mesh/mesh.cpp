@@ -92,6 +92,9 @@ void define_mesh(py::module_& m) {
       "rectangle_triangles", [](double w, double h, int nx, int ny) { return mesh::rectangle_triangles(w, h, nx, ny); },
       py::arg("width"), py::arg("height"), py::arg("nx"), py::arg("ny"),
       "A w x h rectangle (m) of nx x ny cells, two triangles each.");
+  m.def("equilateral_membrane", &mesh::equilateral_membrane, py::arg("rows"), py::arg("long_row"), py::arg("edge"),
+        "A planar membrane of equilateral triangles (edge in m): rows of long_row and long_row - 1 nodes; (7, 6, "
+        "0.01) is Lloyd et al.'s Sec. 5.1 membrane of 39 nodes.");
   m.def("cube_surface", &mesh::cube_surface, py::arg("n"), py::arg("size"),
         "The closed triangulated surface of a cube of edge `size` (m), n x n squares per face.");
   m.def("uv_sphere_surface", &mesh::uv_sphere_surface, py::arg("rings"), py::arg("segments"), py::arg("radius"),
