@@ -20,11 +20,15 @@ g++ -O2 examples/calibrate_and_simulate/main.cpp -o "$tmp/pc_example" $(pkg-conf
 grep -q "tip node" "$tmp/cmake.out"
 cmp "$tmp/cmake.out" "$tmp/pc.out"
 # The Python package from the same prefix (the folder /usr/bin/python3 searches under /usr).
-if [ -d "$tmp/prefix/lib/python3/dist-packages/hooke" ]; then
-  PYTHONPATH="$tmp/prefix/lib/python3/dist-packages" /usr/bin/python3 -c "
+site=$(/usr/bin/python3 -c 'import sys; print(f"lib/python{sys.version_info[0]}.{sys.version_info[1]}/dist-packages")')
+if [ -d "$tmp/prefix/$site/hooke" ]; then
+  PYTHONPATH="$tmp/prefix/$site" /usr/bin/python3 -c "
 import hooke
 m = hooke.calibrate(hooke.read_mesh('data/meshes/cylinder.msh'), hooke.Material(14630.0, 0.25))
 assert m.pairs.shape[0] > 0 and hooke.__file__.startswith('$tmp/prefix'), hooke.__file__
 print('check_install.sh: import hooke from the prefix:', m)"
+else
+  echo "check_install.sh: the Python package is missing from $tmp/prefix/$site" >&2
+  exit 1
 fi
 echo "check_install.sh: the installed package builds and runs with CMake and with pkg-config"
