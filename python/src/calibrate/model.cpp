@@ -31,12 +31,12 @@ void define_model(py::module_& m) {
   py::class_<CalibratedModel>(m, "Model",
                               "A calibrated model: its mesh, springs (pairs, stiffness N/m, rest_length m), tet volume "
                               "terms, lumped masses (kg), the material, the method and its validity warnings.")
-      .def_readonly("method", &CalibratedModel::method)
-      .def_readonly("equation", &CalibratedModel::equation)
-      .def_readonly("mesh", &CalibratedModel::mesh, py::return_value_policy::reference_internal)
-      .def_readonly("material", &CalibratedModel::material)
-      .def_readonly("density", &CalibratedModel::density)
-      .def_readonly("warnings", &CalibratedModel::warnings)
+      .def_readonly("method", &CalibratedModel::method, "stable method name")
+      .def_readonly("equation", &CalibratedModel::equation, "where the constants come from (paper, equation)")
+      .def_readonly("mesh", &CalibratedModel::mesh, py::return_value_policy::reference_internal, "the rest mesh (m)")
+      .def_readonly("material", &CalibratedModel::material, "the material it was calibrated for")
+      .def_readonly("density", &CalibratedModel::density, "kg/m^3, what the masses were made from")
+      .def_readonly("warnings", &CalibratedModel::warnings, "the method's validity warnings (list of str)")
       .def_property_readonly(
           "pairs",
           [](py::object self) {
@@ -72,13 +72,17 @@ void define_model(py::module_& m) {
       .def_property_readonly(
           "masses", flat_property<CalibratedModel>([](CalibratedModel& c) -> VecX& { return c.masses; }, false),
           "(dim * N,) lumped mass per DOF, kg.")
-      .def_property_readonly("certificate",
-                             [](const CalibratedModel& c) {
-                               py::list l;
-                               for (const auto& k : c.certificate) l.append(certificate_case(k));
-                               return l;
-                             })
-      .def_property_readonly("is_surface_model", [](const CalibratedModel& c) { return c.surface.has_value(); })
+      .def_property_readonly(
+          "certificate",
+          [](const CalibratedModel& c) {
+            py::list l;
+            for (const auto& k : c.certificate) l.append(certificate_case(k));
+            return l;
+          },
+          "measured error against the linear FEM per load case (list of dict), empty until certified")
+      .def_property_readonly(
+          "is_surface_model", [](const CalibratedModel& c) { return c.surface.has_value(); },
+          "True for the Arnab & Raja surface model")
       .def("__repr__", [](const CalibratedModel& c) {
         return "<hooke.Model " + c.method + ", " + std::to_string(c.mesh.node_count()) + " nodes, " +
                std::to_string(c.springs.pairs.size()) + " springs>";

@@ -25,8 +25,8 @@ void define_compare(py::module_& m) {
       .def_readonly("max_error", &Comparison::max_error, "m")
       .def_readonly("mean_error", &Comparison::mean_error, "m")
       .def_readonly("relative_l2", &Comparison::relative_l2, "||x_model - x_fem|| / ||x_fem - X||")
-      .def_readonly("fem_report", &Comparison::fem_report)
-      .def_readonly("model_report", &Comparison::spring_report)
+      .def_readonly("fem_report", &Comparison::fem_report, "SolveReport of the FEM reference")
+      .def_readonly("model_report", &Comparison::spring_report, "SolveReport of the model")
       .def_property_readonly(
           "traction", [](const Comparison& c) { return c.load.traction_pa; }, "Pa");
   m.def(

@@ -20,11 +20,12 @@ void define_material(py::module_& m) {
            "Material(E, nu, thickness=None, law='linear'): Young's modulus E in Pa (> 0), Poisson's ratio nu in "
            "(-1, 0.5), plate thickness in m for 2D meshes (default 1), law 'linear', 'stvk' or 'neohookean' (used "
            "by the 'fem' model). Raises InvalidMaterial out of range.")
-      .def_readonly("E", &material::Material::youngs_modulus)
-      .def_readonly("nu", &material::Material::poisson_ratio)
-      .def_readonly("thickness", &material::Material::thickness)
-      .def_property_readonly("law",
-                             [](const material::Material& mat) { return std::string(material::law_name(mat.law)); })
+      .def_readonly("E", &material::Material::youngs_modulus, "Young's modulus, Pa")
+      .def_readonly("nu", &material::Material::poisson_ratio, "Poisson's ratio")
+      .def_readonly("thickness", &material::Material::thickness, "plate thickness of 2D meshes, m")
+      .def_property_readonly(
+          "law", [](const material::Material& mat) { return std::string(material::law_name(mat.law)); },
+          "'linear', 'stvk' or 'neohookean'")
       .def("__repr__", [](const material::Material& mat) {
         return "<hooke.Material E=" + std::to_string(mat.youngs_modulus) +
                " Pa, nu=" + std::to_string(mat.poisson_ratio) + ", " + std::string(material::law_name(mat.law)) + ">";

@@ -52,11 +52,13 @@ void define_mesh(py::module_& m) {
             return view(mesh.elements.data(), mesh.elements.rows(), mesh.elements.cols(), self, false);
           },
           "(M, k) 0-based node indices: a read-only view (editing it could break the mesh's validity).")
-      .def_property_readonly("kind", [](const mesh::Mesh& mesh) { return std::string(element_kind_name(mesh.kind)); })
-      .def_property_readonly("dim", &mesh::Mesh::dim)
-      .def_property_readonly("node_count", &mesh::Mesh::node_count)
-      .def_property_readonly("element_count", &mesh::Mesh::element_count)
-      .def_readonly("source", &mesh::Mesh::source)
+      .def_property_readonly(
+          "kind", [](const mesh::Mesh& mesh) { return std::string(element_kind_name(mesh.kind)); },
+          "\'triangle\', \'quad\', \'tet\' or \'surface-triangle\'")
+      .def_property_readonly("dim", &mesh::Mesh::dim, "coordinate dimension, 2 or 3")
+      .def_property_readonly("node_count", &mesh::Mesh::node_count, "number of nodes N")
+      .def_property_readonly("element_count", &mesh::Mesh::element_count, "number of elements M")
+      .def_readonly("source", &mesh::Mesh::source, "the file or generator it came from (used in messages)")
       .def("__repr__", [](const mesh::Mesh& mesh) {
         return "<hooke.Mesh " + std::string(element_kind_name(mesh.kind)) + ", " + std::to_string(mesh.node_count()) +
                " nodes, " + std::to_string(mesh.element_count()) + " elements>";
@@ -95,6 +97,18 @@ void define_mesh(py::module_& m) {
   m.def("equilateral_membrane", &mesh::equilateral_membrane, py::arg("rows"), py::arg("long_row"), py::arg("edge"),
         "A planar membrane of equilateral triangles (edge in m): rows of long_row and long_row - 1 nodes; (7, 6, "
         "0.01) is Lloyd et al.'s Sec. 5.1 membrane of 39 nodes.");
+  m.def("hexagon_membrane", &mesh::hexagon_membrane, py::arg("rings"), py::arg("side"),
+        "A regular hexagon of side `side` (m) of equilateral triangles, `rings` triangles from the centre to each side "
+        "(Lloyd et al.'s Fig. 3).");
+  m.def("rectangle_quads", &mesh::rectangle_quads, py::arg("width"), py::arg("height"), py::arg("nx"), py::arg("ny"),
+        "A width x height rectangle (m) of nx x ny bilinear quads.");
+  m.def(
+      "tetrahedralise_radially",
+      [](const mesh::Mesh& surface, const py::object& centre, int layers) {
+        return mesh::tetrahedralise_radially(surface, vector_argument(centre, "centre", 3), layers);
+      },
+      py::arg("surface"), py::arg("centre"), py::arg("layers"),
+      "Tets filling a closed surface star-shaped about `centre` (m), in `layers` layers towards it.");
   m.def("cube_surface", &mesh::cube_surface, py::arg("n"), py::arg("size"),
         "The closed triangulated surface of a cube of edge `size` (m), n x n squares per face.");
   m.def("uv_sphere_surface", &mesh::uv_sphere_surface, py::arg("rings"), py::arg("segments"), py::arg("radius"),

@@ -27,7 +27,7 @@ void define_simulator(py::module_& m) {
       .def_readonly("iterations", &solve::StepReport::iterations, "Newton or local/global iterations")
       .def_readonly("linear_iterations", &solve::StepReport::linear_iterations, "CG iterations (cg only)")
       .def_readonly("residual", &solve::StepReport::residual, "|gradient of the step's objective|, N")
-      .def_readonly("converged", &solve::StepReport::converged)
+      .def_readonly("converged", &solve::StepReport::converged, "False when Newton ended above its tolerance")
       .def_readonly("beyond_stable_dt", &solve::StepReport::beyond_stable_dt, "explicit steps: dt above the limit")
       .def_property_readonly(
           "probe_force",

@@ -17,20 +17,23 @@ void define_reports(py::module_& m) {
       .def_property_readonly(
           "status", [](const solve::SolveReport& r) { return std::string(solve::status_name(r.status)); },
           "'converged', 'not-converged', 'unstable' or 'singular'")
-      .def_readonly("iterations", &solve::SolveReport::iterations)
-      .def_readonly("load_steps", &solve::SolveReport::load_steps)
-      .def_readonly("load_factor", &solve::SolveReport::load_factor)
+      .def_readonly("iterations", &solve::SolveReport::iterations, "Newton iterations over all load steps")
+      .def_readonly("load_steps", &solve::SolveReport::load_steps, "accepted load steps")
+      .def_readonly("load_factor", &solve::SolveReport::load_factor,
+                    "load factor of the returned state (1 = full load)")
       .def_readonly("residual", &solve::SolveReport::residual, "free-DOF force residual, N")
       .def_readonly("reference_force", &solve::SolveReport::reference_force, "norm of the applied forces, N")
       .def_readonly("min_eigenvalue", &solve::SolveReport::min_eigenvalue, "smallest tangent eigenvalue, N/m")
-      .def_readonly("critical_load_factor", &solve::SolveReport::critical_load_factor)
-      .def_readonly("free_dofs", &solve::SolveReport::free_dofs)
-      .def_readonly("solve_seconds", &solve::SolveReport::solve_seconds)
-      .def_readonly("backend", &solve::SolveReport::backend)
-      .def_readonly("residual_history", &solve::SolveReport::residual_history)
-      .def_readonly("message", &solve::SolveReport::message)
-      .def_property_readonly("converged",
-                             [](const solve::SolveReport& r) { return r.status == solve::SolveStatus::kConverged; })
+      .def_readonly("critical_load_factor", &solve::SolveReport::critical_load_factor,
+                    "load factor where stability is lost, or -1")
+      .def_readonly("free_dofs", &solve::SolveReport::free_dofs, "number of unknowns")
+      .def_readonly("solve_seconds", &solve::SolveReport::solve_seconds, "wall time, s")
+      .def_readonly("backend", &solve::SolveReport::backend, "linear solver used")
+      .def_readonly("residual_history", &solve::SolveReport::residual_history, "residual per Newton iteration, N")
+      .def_readonly("message", &solve::SolveReport::message, "one sentence on the outcome")
+      .def_property_readonly(
+          "converged", [](const solve::SolveReport& r) { return r.status == solve::SolveStatus::kConverged; },
+          "status == \'converged\'")
       .def("__repr__", [](const solve::SolveReport& r) {
         return "<hooke.SolveReport " + std::string(solve::status_name(r.status)) + ": " + r.message + ">";
       });
@@ -75,13 +78,15 @@ void define_static_equilibrium(py::module_& m) {
             p.problem.external_force = vector_argument(f, "external_force", p.problem.model->dof_count());
           },
           "(dim * N,) dead nodal forces, N (a writable view).")
-      .def_property_readonly("fixed_dofs",
-                             [](const ProblemData& p) {
-                               std::vector<int> fixed;
-                               for (size_t i = 0; i < p.problem.fixed_dofs.size(); ++i)
-                                 if (p.problem.fixed_dofs[i]) fixed.push_back(static_cast<int>(i));
-                               return fixed;
-                             })
+      .def_property_readonly(
+          "fixed_dofs",
+          [](const ProblemData& p) {
+            std::vector<int> fixed;
+            for (size_t i = 0; i < p.problem.fixed_dofs.size(); ++i)
+              if (p.problem.fixed_dofs[i]) fixed.push_back(static_cast<int>(i));
+            return fixed;
+          },
+          "indices of the held DOFs (dim * node + axis)")
       .def(
           "set_interaction",
           [](ProblemData& p, const py::object& point, const py::object& direction, double radius) {
