@@ -1,6 +1,7 @@
 // Malformed files are rejected with the file and the line (or byte) of the problem.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <hooke/core/error.hpp>
@@ -49,8 +50,12 @@ INSTANTIATE_TEST_SUITE_P(
                   "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 "
                   "0\n$EndNodes\n$Elements\n1\n1 2 2 0 1 1 2 9\n$EndElements\n",
                   "node 9", 12},
+        // Truncated: the declared 3 nodes cannot fit in the 5 bytes left (reported where the count is read).
         Malformed{"truncated.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 3 1 3\n2 1 0 3\n1\n2\n",
-                  "file ends", 9},
+                  "truncated", 6},
+        Malformed{"truncated_coordinates.msh",
+                  "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1 1 1\n2 1 0 1\n1\n0 0\n          \n", "file ends",
+                  10},
         Malformed{"version.msh", "$MeshFormat\n3.0 0 8\n$EndMeshFormat\n", "not supported", 2},
         Malformed{"bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "out of range", 6},
         Malformed{"bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "vertex 4", 4},
@@ -62,13 +67,53 @@ INSTANTIATE_TEST_SUITE_P(
         Malformed{"bad.vtu",
                   "<VTKFile type=\"UnstructuredGrid\">\n<UnstructuredGrid>\n<Piece>\n<Points>\n<DataArray "
                   "format=\"binary\">\n",
-                  "only ASCII", 5}),
+                  "only ASCII", 5},
+        // Issue 16 item 1: a parametric node block with an entity dimension from the file used to overflow a
+        // 6-double buffer.
+        Malformed{"parametric_dim.msh",
+                  "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1 1 1\n9 1 1 1\n1\n0 0 0 0 0 0 0 0 0 0 0 0\n",
+                  "entity dimension is 9", 6},
+        // Item 3: a declared block of 10^9 nodes in a 90-byte file used to allocate 7.6 GB before failing.
+        Malformed{"huge_block.msh",
+                  "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1000000000 1 1000000000\n2 1 0 1000000000\n1\n",
+                  "cannot fit", 6},
+        // Item 4: the version token went through std::stod (an internal error, exit 4).
+        Malformed{"version_token.msh", "$MeshFormat\nfour 0 8\n$EndMeshFormat\n", "version number", 2},
+        Malformed{"components.vtu",
+                  "<VTKFile type=\"UnstructuredGrid\">\n<UnstructuredGrid>\n<Piece NumberOfPoints=\"1\" "
+                  "NumberOfCells=\"0\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"x\" "
+                  "format=\"ascii\">\n0 0 0\n</DataArray>\n</Points>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n",
+                  "NumberOfComponents", 5}),
     [](const auto& param_info) {
       std::string n = param_info.param.name;
       for (char& ch : n)
         if (ch == '.') ch = '_';
       return n;
     });
+
+// Issue 16 item 2: in a binary $Entities section a boundary count of 2^62 made the skip of 4 x count bytes wrap
+// around the bounds check, and the reader looped forever. Now the count is checked against the bytes left.
+TEST(MalformedBinaryMsh, HugeBoundaryCountIsRejectedNotLoopedOn) {
+  auto u64 = [](std::uint64_t v) { return std::string(reinterpret_cast<const char*>(&v), 8); };
+  auto i32 = [](std::int32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  std::string content = "$MeshFormat\n4.1 1 8\n" + i32(1) + "\n$EndMeshFormat\n$Entities\n";
+  content += u64(0) + u64(1) + u64(0) + u64(0);               // one curve
+  content += i32(1) + std::string(6 * sizeof(double), '\0');  // its tag and bounding box
+  content += u64(0) + u64(std::uint64_t(1) << 62);            // no physical tags, 2^62 boundary tags
+  content += std::string(16, '\0') + "\n$EndEntities\n";
+  const fs::path path = fs::temp_directory_path() / "hooke_malformed" / "huge_bound.msh";
+  fs::create_directories(path.parent_path());
+  {
+    std::ofstream out(path, std::ios::binary);
+    out << content;
+  }
+  try {
+    read_mesh(path);
+    FAIL() << "accepted";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot fit"), std::string::npos) << e.what();
+  }
+}
 
 TEST(MissingFile, IsAnIoError) { EXPECT_THROW(read_mesh("/nonexistent/mesh.msh"), IoError); }
 TEST(UnknownExtension, IsAnInvalidArgument) { EXPECT_THROW(read_mesh("mesh.xyz"), InvalidArgument); }

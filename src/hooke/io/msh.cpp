@@ -1,3 +1,4 @@
+#include <charconv>
 #include <cstdint>
 #include <hooke/core/atomic_file.hpp>
 #include <hooke/io/detail/assemble.hpp>
@@ -75,7 +76,9 @@ struct MshParser {
 
   void mesh_format() {
     const std::string_view v = r.expect_token("the version number");
-    version = std::stod(std::string(v));
+    const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), version);
+    if (ec != std::errc() || end != v.data() + v.size())
+      r.fail("expected the MSH version number (e.g. 4.1), found '" + std::string(v) + "'");
     const std::int64_t file_type = r.integer("the file type");
     const std::int64_t data_size = r.integer("the data size");
     if (version != 2.2 && !(version >= 4.1 && version < 4.2))
@@ -174,7 +177,8 @@ struct MshParser {
           entity_physical[{dim, tag}] = first;
           if (dim > 0) {
             const auto nbound = r.binary<std::uint64_t>("an entity's boundary count");
-            r.skip_bytes(sizeof(int) * nbound, "entity boundary tags");
+            r.skip_bytes(sizeof(int) * r.bounded_count(nbound, sizeof(int), "the entity boundary count"),
+                         "entity boundary tags");
           }
         }
     } else {
@@ -214,9 +218,14 @@ struct MshParser {
     size_value("the maximum node tag");
     for (std::uint64_t b = 0; b < blocks; ++b) {
       const int dim = int_value("a node block's entity dimension");
+      if (dim < 0 || dim > 3) r.fail("a node block's entity dimension is " + std::to_string(dim) + " (0 to 3)");
       int_value("a node block's entity tag");
       const int parametric = int_value("the parametric flag");
-      const std::uint64_t n = size_value("a node block's size");
+      if (parametric != 0 && parametric != 1)
+        r.fail("the parametric flag is " + std::to_string(parametric) + " (0 or 1)");
+      // Each node takes a tag and three coordinates: at least 32 bytes binary, 8 as text ("1\n0 0 0\n").
+      const std::uint64_t n =
+          r.bounded_count(size_value("a node block's size"), binary ? 32 : 8, "the node block size");
       std::vector<std::int64_t> tags(n);
       for (auto& t : tags) t = static_cast<std::int64_t>(size_value("a node tag"));
       const int per_node = 3 + (parametric ? dim : 0);

@@ -1,3 +1,4 @@
+#include <charconv>
 #include <hooke/core/atomic_file.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/io/detail/assemble.hpp>
@@ -154,7 +155,13 @@ VtuContents read_vtu(const std::filesystem::path& path) {
       Array a;
       a.name = attr.count("Name") ? attr["Name"] : "";
       a.section = section;
-      a.components = attr.count("NumberOfComponents") ? std::stoi(attr["NumberOfComponents"]) : 1;
+      a.components = 1;
+      if (attr.count("NumberOfComponents")) {
+        const std::string& c = attr["NumberOfComponents"];
+        const auto [parsed, ec] = std::from_chars(c.data(), c.data() + c.size(), a.components);
+        if (ec != std::errc() || parsed != c.data() + c.size() || a.components < 1 || a.components > 9)
+          r.fail_at_offset(pos, "DataArray '" + a.name + "' has NumberOfComponents=\"" + c + "\" (1 to 9 expected)");
+      }
       detail::Reader body(r.name(), s.substr(0, end));
       body.skip_bytes(close + 1, "");
       while (true) {

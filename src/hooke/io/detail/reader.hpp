@@ -20,6 +20,16 @@ class Reader {
   size_t offset() const { return m_pos; }
   std::int64_t line() const;  // 1-based line of the cursor
   bool at_end() const { return m_pos >= m_data.size(); }
+  // Bytes left after the cursor.
+  size_t remaining() const { return m_pos < m_data.size() ? m_data.size() - m_pos : 0; }
+  // A count declared by the file, checked before anything is allocated or skipped for it: `count` items of at least
+  // `min_bytes` bytes each must fit in the bytes left (no multiplication, so no wrap-around). Fails naming `what`.
+  std::uint64_t bounded_count(std::uint64_t count, size_t min_bytes, const char* what) const {
+    if (min_bytes > 0 && count > remaining() / min_bytes)
+      fail(std::string(what) + " " + std::to_string(count) + " cannot fit in the " + std::to_string(remaining()) +
+           " bytes left in the file (it is truncated, or the count is wrong)");
+    return count;
+  }
 
   [[noreturn]] void fail(const std::string& what) const { throw ParseError(m_name, line(), what); }
   // Error naming the line that holds byte `offset`.
@@ -46,14 +56,14 @@ class Reader {
   // Binary access at the cursor (little-endian host assumed, as the formats' own writers produce).
   template <typename T>
   T binary(const char* what) {
-    if (m_pos + sizeof(T) > m_data.size()) fail_at_byte(std::string("file ends inside ") + what);
+    if (sizeof(T) > remaining()) fail_at_byte(std::string("file ends inside ") + what);
     T v;
     std::memcpy(&v, m_data.data() + m_pos, sizeof(T));
     m_pos += sizeof(T);
     return v;
   }
   void skip_bytes(size_t n, const char* what) {
-    if (m_pos + n > m_data.size()) fail_at_byte(std::string("file ends inside ") + what);
+    if (n > remaining()) fail_at_byte(std::string("file ends inside ") + what);
     m_pos += n;
   }
 
