@@ -14,9 +14,18 @@ Reader Reader::open(const std::filesystem::path& path) {
   return Reader(path.string(), ss.str());
 }
 
+// Counts newlines from the last position asked about (readers ask in increasing order), so that asking for the line
+// of every record is linear in the file size, not quadratic (issue 16 item 5: a 2.7 MB OBJ took 58 s).
 std::int64_t Reader::line() const {
-  const auto end = m_data.begin() + static_cast<std::ptrdiff_t>(std::min(m_pos, m_data.size()));
-  return 1 + std::count(m_data.begin(), end, '\n');
+  const size_t pos = std::min(m_pos, m_data.size());
+  if (pos < m_counted_to) {
+    m_counted_to = 0;
+    m_counted_newlines = 0;
+  }
+  m_counted_newlines += std::count(m_data.begin() + static_cast<std::ptrdiff_t>(m_counted_to),
+                                   m_data.begin() + static_cast<std::ptrdiff_t>(pos), '\n');
+  m_counted_to = pos;
+  return 1 + m_counted_newlines;
 }
 
 void Reader::fail_at_offset(size_t offset, const std::string& what) const {

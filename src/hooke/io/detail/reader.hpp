@@ -71,6 +71,8 @@ class Reader {
   std::string m_name;
   std::string m_data;
   size_t m_pos = 0;
+  mutable size_t m_counted_to = 0;              // line(): newlines before this offset are counted
+  mutable std::int64_t m_counted_newlines = 0;  // in m_counted_newlines
 };
 
 }  // namespace hooke::io::detail
