@@ -153,7 +153,7 @@ TEST(StiffnessFit, RegularTetAtNuOneQuarterGivesEquation12) {
 // Lloyd Eq. 14: springs and a volume term fitted together on the regular tet at nu = 1/4.
 TEST(StiffnessFit, RegularTetWithVolumeTermGivesEquation14) {
   const double l = 0.01, e = 14630.0;
-  const SpringModel s = stiffness_fit(regular_tet(l), {{Law::kLinear, e, 0.25}}, {.volume_terms = true});
+  const SpringModel s = stiffness_fit(regular_tet(l), {{Law::kLinear, e, 0.25}}, {.volume = VolumeTerm::kFitted});
   const double k14 = 2.0 * std::sqrt(2.0) / 21.0 * 4.0 / 5.0 * l * e,
                kv14 = std::sqrt(2.0) / 84.0 * l * l * l * e * 2.0 / 5.0;
   std::cout << "[tet+volume] stiffness-fit k / (l E) = " << s.stiffness(0) / (l * e) << " (Eq. 14: " << k14 / (l * e)

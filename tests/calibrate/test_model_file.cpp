@@ -76,7 +76,7 @@ TEST_P(ModelFileRoundTrip, WriteReadIsBitForBit) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, ModelFileRoundTrip,
-                         testing::Values("lloyd-tet", "lloyd-tet-volume", "stiffness-fit", "surface"));
+                         testing::Values("lloyd-tet", "lloyd-tet-volume", "stiffness-fit", "any-nu-tet", "surface"));
 
 TEST(ModelFile, CertificateAndWarningsRoundTrip) {
   CalibratedModel a = tet_model("lloyd-tet");

@@ -1,5 +1,6 @@
 #include <cmath>
 #include <cstdio>
+#include <hooke/calibrate/cauchy_split.hpp>
 #include <hooke/calibrate/detail/element_springs.hpp>
 #include <hooke/calibrate/method.hpp>
 #include <hooke/calibrate/stiffness_fit.hpp>
@@ -18,7 +19,8 @@ constexpr Named kNames[] = {
     {Method::kVanGelder, "vangelder"},          {Method::kLloydEquilateral, "lloyd-equilateral"},
     {Method::kLloydTriangle, "lloyd-triangle"}, {Method::kLloydSquare, "lloyd-square"},
     {Method::kLloydTet, "lloyd-tet"},           {Method::kLloydTetVolume, "lloyd-tet-volume"},
-    {Method::kStiffnessFit, "stiffness-fit"},   {Method::kStiffnessFitVolume, "stiffness-fit-volume"}};
+    {Method::kStiffnessFit, "stiffness-fit"},   {Method::kStiffnessFitVolume, "stiffness-fit-volume"},
+    {Method::kAnyNuTet, "any-nu-tet"}};
 
 void require_kind(const mesh::Mesh& m, bool ok, Method method, const char* what) {
   if (!ok)
@@ -123,7 +125,7 @@ SpringModel calibrate(const mesh::Mesh& m, const std::vector<material::Material>
   const bool planar_tri = m.kind == ElementKind::kTriangle, quad = m.kind == ElementKind::kQuad,
              tet = m.kind == ElementKind::kTet;
   if (method == Method::kStiffnessFit) return stiffness_fit(m, materials);
-  if (method == Method::kStiffnessFitVolume) return stiffness_fit(m, materials, {.volume_terms = true});
+  if (method == Method::kStiffnessFitVolume) return stiffness_fit(m, materials, {.volume = VolumeTerm::kVolumetric});
   if (m.kind == mesh::ElementKind::kTriangle || m.kind == mesh::ElementKind::kQuad || m.kind == mesh::ElementKind::kTet)
     for (const auto& w : validity_warnings(m, materials, method)) log_warning(w);
   detail::EdgeAccumulator acc(m);
@@ -170,6 +172,14 @@ SpringModel calibrate(const mesh::Mesh& m, const std::vector<material::Material>
         acc.for_each_edge(e, [&](int s, double) { acc.add(s, c * lhat * mat(e).youngs_modulus); });
       }
       break;
+    case Method::kAnyNuTet:
+      require_kind(m, tet, method, "tets");
+      for (int e = 0; e < m.element_count(); ++e) {
+        const double lhat = equivalent_edge(mesh::element_measure(m, e));
+        const double es = cauchy_split(mat(e)).spring_youngs_modulus;  // Eq. 12 at E_s
+        acc.for_each_edge(e, [&](int s, double) { acc.add(s, 2.0 * std::sqrt(2.0) / 25.0 * lhat * es); });
+      }
+      break;
     case Method::kStiffnessFit:
     case Method::kStiffnessFitVolume: break;
   }
@@ -177,15 +187,23 @@ SpringModel calibrate(const mesh::Mesh& m, const std::vector<material::Material>
   if (method == Method::kLloydSquare)
     for (size_t s = 0; s < out.pairs.size(); ++s)
       out.rest_length(static_cast<Eigen::Index>(s)) *= acc.is_diagonal(static_cast<int>(s)) ? 6.0 / 7.0 : 6.0 / 5.0;
-  if (method == Method::kLloydTetVolume) {
+  if (method == Method::kLloydTetVolume || method == Method::kAnyNuTet) {
     out.volume_tets = m.elements;
     out.volume_stiffness.resize(m.element_count());
     out.rest_volume.resize(m.element_count());
     for (int e = 0; e < m.element_count(); ++e) {
       const double v = mesh::element_measure(m, e), lhat = equivalent_edge(v);
       out.rest_volume(e) = v;
-      out.volume_stiffness(e) = std::sqrt(2.0) / 84.0 * lhat * lhat * lhat * mat(e).youngs_modulus * 2.0 / 5.0;
+      out.volume_stiffness(e) =
+          method == Method::kAnyNuTet
+              ? cauchy_split(mat(e)).volume_lambda * v  // linearises to lambda_V V0 (tr eps)^2 / 2
+              : std::sqrt(2.0) / 84.0 * lhat * lhat * lhat * mat(e).youngs_modulus * 2.0 / 5.0;
     }
+  }
+  if (method == Method::kAnyNuTet && out.volume_stiffness.isZero(0.0)) {  // nu <= 1/4: springs only (lloyd-tet)
+    out.volume_tets.resize(0, 4);
+    out.volume_stiffness.resize(0);
+    out.rest_volume.resize(0);
   }
   return out;
 }

@@ -10,14 +10,15 @@
 namespace hooke::calibrate {
 
 enum class Method {
-  kVanGelder,          ///< "vangelder": k = sum_e E t A_e / l^2 (triangles); sum_e E V_e / l^2 (tets)
-  kLloydEquilateral,   ///< "lloyd-equilateral": Eq. 8, k = sum_e E t sqrt(3)/4 (triangles)
-  kLloydTriangle,      ///< "lloyd-triangle": Eq. 9, k = sum_e E t sqrt(3)/4 A_e/A_0, A_0 = sqrt(3)/4 l^2
-  kLloydSquare,        ///< "lloyd-square": Eq. 10-11, edges 5/16 t E (l0 = 6/5 l), diagonals 7/16 t E (l0 = 6/7 l)
-  kLloydTet,           ///< "lloyd-tet": Eq. 12 with Eq. 13, k = sum_e 2 sqrt(2)/25 l_e E
-  kLloydTetVolume,     ///< "lloyd-tet-volume": Eq. 14, springs plus volume terms
-  kStiffnessFit,       ///< "stiffness-fit": per element, non-negative least squares on ||K_FEM - K_MSM||_F
-  kStiffnessFitVolume  ///< "stiffness-fit-volume": the same with a volume term per tet (k_V fitted too)
+  kVanGelder,           ///< "vangelder": k = sum_e E t A_e / l^2 (triangles); sum_e E V_e / l^2 (tets)
+  kLloydEquilateral,    ///< "lloyd-equilateral": Eq. 8, k = sum_e E t sqrt(3)/4 (triangles)
+  kLloydTriangle,       ///< "lloyd-triangle": Eq. 9, k = sum_e E t sqrt(3)/4 A_e/A_0, A_0 = sqrt(3)/4 l^2
+  kLloydSquare,         ///< "lloyd-square": Eq. 10-11, edges 5/16 t E (l0 = 6/5 l), diagonals 7/16 t E (l0 = 6/7 l)
+  kLloydTet,            ///< "lloyd-tet": Eq. 12 with Eq. 13, k = sum_e 2 sqrt(2)/25 l_e E
+  kLloydTetVolume,      ///< "lloyd-tet-volume": Eq. 14, springs plus volume terms
+  kStiffnessFit,        ///< "stiffness-fit": per element, non-negative least squares on ||K_FEM - K_MSM||_F
+  kStiffnessFitVolume,  ///< "stiffness-fit-volume": springs fitted at (E_s, nu = 1/4) plus k_V = lambda_V V0 per tet
+  kAnyNuTet             ///< "any-nu-tet": Eq. 12-13 springs at E_s plus k_V = lambda_V V0 per tet (cauchy_split)
 };
 
 Method method_from_name(std::string_view name);  ///< @throws InvalidArgument listing the names

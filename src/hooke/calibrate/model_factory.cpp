@@ -10,9 +10,9 @@
 namespace hooke::calibrate {
 namespace {
 
-constexpr std::string_view kCalibrationMethods[] = {"vangelder",     "lloyd-equilateral",   "lloyd-triangle",
-                                                    "lloyd-square",  "lloyd-tet",           "lloyd-tet-volume",
-                                                    "stiffness-fit", "stiffness-fit-volume"};
+constexpr std::string_view kCalibrationMethods[] = {
+    "vangelder",        "lloyd-equilateral", "lloyd-triangle",       "lloyd-square", "lloyd-tet",
+    "lloyd-tet-volume", "stiffness-fit",     "stiffness-fit-volume", "any-nu-tet"};
 
 CalibratedModel surface_model(const mesh::Mesh& mesh, const material::Material& material, const ModelOptions& o) {
   SurfaceOptions so = o.surface;
@@ -58,9 +58,14 @@ std::string method_equation(std::string_view method) {
   if (method == "lloyd-tet") return "Lloyd et al. 2007, Eq. 12 with the equivalent edge length of Eq. 13";
   if (method == "lloyd-tet-volume") return "Lloyd et al. 2007, Eq. 14 with the equivalent edge length of Eq. 13";
   if (method == "stiffness-fit")
-    return "Lloyd et al. 2007, Sec. 3.3 numerically: per element min ||K_FEM - K_MSM||_F, k >= 0";
+    return "Lloyd et al. 2007, Sec. 3.3 numerically: per element min ||K_FEM - K_MSM||_F, k >= 0 (tets: K_FEM at "
+           "E, nu = 1/4, what springs can carry; docs/methods/any_nu.md)";
   if (method == "stiffness-fit-volume")
-    return "Lloyd et al. 2007, Sec. 3.3 numerically with a volume term per tet (App. C.2)";
+    return "docs/methods/any_nu.md: per tet min ||K_FEM(5 mu/2, 1/4) - K_MSM||_F, k >= 0, and a volume term "
+           "k_V = (lambda - mu) V0 for nu >= 1/4 (App. C.2)";
+  if (method == "any-nu-tet")
+    return "docs/methods/any_nu.md: Lloyd et al. 2007 Eq. 12-13 springs at E_s = 5 mu / 2 and a volume term "
+           "k_V = (lambda - mu) V0 per tet (App. C.2) for nu >= 1/4; below, Eq. 12-13 at E (lloyd-tet)";
   if (method == "surface")
     return "Arnab & Raja: anchors (Eq. 2), volume penalty (Eq. 3, 4), membrane springs of Lloyd et al. Eq. 9";
   if (method == "fem") return "finite elements (CST, Q4, tet4) of the material's law";

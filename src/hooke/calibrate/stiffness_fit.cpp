@@ -1,5 +1,6 @@
 #include <Eigen/LU>
 #include <array>
+#include <hooke/calibrate/cauchy_split.hpp>
 #include <hooke/calibrate/detail/element_springs.hpp>
 #include <hooke/calibrate/stiffness_fit.hpp>
 #include <hooke/core/error.hpp>
@@ -68,6 +69,18 @@ MatX self_stress(const MatX& p, const std::vector<std::array<int, 2>>& pairs) {
   return kernel;
 }
 
+// The material whose tet4 matrix the springs of a tet are fitted to. A spring network's tensor is fully symmetric,
+// so the literal fit at nu finds the full symmetrisation lambda' = mu' = (lambda + 2 mu)/3 of the material
+// (docs/methods/any_nu.md); the network target is a nu = 1/4 material instead: with E (springs only, Lloyd's
+// choice for Eq. 12) or with the shear modulus mu beside an exact volumetric term.
+material::Material fit_target(const material::Material& mat, const StiffnessFitOptions& options) {
+  if (!options.network_target || options.volume == VolumeTerm::kFitted) return mat;
+  material::Material target = mat;
+  target.poisson_ratio = 0.25;
+  if (options.volume == VolumeTerm::kVolumetric) target.youngs_modulus = cauchy_split(mat).spring_youngs_modulus;
+  return target;
+}
+
 }  // namespace
 
 VecX fit_nonnegative(const MatX& target, const std::vector<MatX>& bases, double* residual) {
@@ -112,24 +125,25 @@ SpringModel stiffness_fit(const mesh::Mesh& m, const std::vector<material::Mater
   using mesh::ElementKind;
   if (m.kind == ElementKind::kSurfaceTriangle)
     throw InvalidArgument("stiffness-fit needs a triangle, quad or tet mesh");
-  if (options.volume_terms && m.kind != ElementKind::kTet) throw InvalidArgument("volume terms need a tet mesh");
+  const bool volume_terms = options.volume != VolumeTerm::kNone;
+  if (volume_terms && m.kind != ElementKind::kTet) throw InvalidArgument("volume terms need a tet mesh");
   detail::EdgeAccumulator acc(m);
   const int npe = mesh::nodes_per_element(m.kind), d = m.dim();
-  VecX k_volume = VecX::Zero(options.volume_terms ? m.element_count() : 0);
+  VecX k_volume = VecX::Zero(volume_terms ? m.element_count() : 0);
   for (int e = 0; e < m.element_count(); ++e) {
     const material::Material& mat = materials.size() == 1 ? materials[0] : materials[static_cast<size_t>(e)];
     MatX p(npe, d);
     for (int a = 0; a < npe; ++a) p.row(a) = m.nodes.row(m.elements(e, a));
     MatX k_fem;
     if (m.kind == ElementKind::kTet)
-      k_fem = fem::tet4_stiffness(p, mat);
+      k_fem = fem::tet4_stiffness(p, fit_target(mat, options));
     else if (m.kind == ElementKind::kQuad)
       k_fem = fem::quad4_stiffness(p, mat);
     else
       k_fem = fem::cst_stiffness(p, mat);
     std::vector<MatX> bases;
     for (const auto& lp : acc.local_pairs()) bases.push_back(unit_spring(p, lp[0], lp[1]));
-    if (options.volume_terms) bases.push_back(unit_volume(p));
+    if (options.volume == VolumeTerm::kFitted) bases.push_back(unit_volume(p));
     // Quads: the prestrain of Eq. 11 as well. Its isotropic stiffness part a_s I must be a self-stress of the
     // element (else the rest shape is not an equilibrium), a_s = alpha * state_s with alpha of either sign:
     // two non-negative bases, +state and -state.
@@ -146,7 +160,9 @@ SpringModel stiffness_fit(const mesh::Mesh& m, const std::vector<material::Mater
     const VecX c = fit_nonnegative(k_fem, bases);
     const std::vector<int> springs = acc.element_springs(e);
     for (size_t s = 0; s < springs.size(); ++s) acc.add(springs[s], c(static_cast<Eigen::Index>(s)));
-    if (options.volume_terms) k_volume(e) = c(static_cast<Eigen::Index>(springs.size()));
+    if (options.volume == VolumeTerm::kFitted) k_volume(e) = c(static_cast<Eigen::Index>(springs.size()));
+    if (options.volume == VolumeTerm::kVolumetric)
+      k_volume(e) = cauchy_split(mat).volume_lambda * mesh::element_measure(m, e);  // lambda_V V0 (tr eps)^2 / 2
     for (Eigen::Index st = 0; st < states.cols(); ++st) {
       const double alpha =
           c(static_cast<Eigen::Index>(first_state) + 2 * st) - c(static_cast<Eigen::Index>(first_state) + 2 * st + 1);
@@ -155,7 +171,7 @@ SpringModel stiffness_fit(const mesh::Mesh& m, const std::vector<material::Mater
     }
   }
   SpringModel out = acc.finish();
-  if (options.volume_terms) {
+  if (volume_terms && !k_volume.isZero(0.0)) {  // kVolumetric at nu <= 1/4 has none
     out.volume_tets = m.elements;
     out.volume_stiffness = k_volume;
     out.rest_volume.resize(m.element_count());

@@ -67,8 +67,8 @@ TetVolumeBlock::TetVolumeBlock(RowMatXi tets, VecX stiffness, VecX rest_volume)
   if (m_tets.cols() != 4 || m_stiffness.size() != m_tets.rows() || m_rest_volume.size() != m_tets.rows())
     throw InvalidArgument("TetVolumeBlock: one stiffness and one rest volume per tet");
   for (Eigen::Index t = 0; t < m_tets.rows(); ++t)
-    if (!(m_stiffness(t) >= 0.0) || !(m_rest_volume(t) > 0.0))
-      throw InvalidArgument("tet " + std::to_string(t) + " has a negative k_V or a non-positive rest volume");
+    if (!std::isfinite(m_stiffness(t)) || !(m_rest_volume(t) > 0.0) || !std::isfinite(m_rest_volume(t)))
+      throw InvalidArgument("tet " + std::to_string(t) + " has a non-finite k_V or a non-positive rest volume");
   m_schedule = ElementSchedule(m_tets);
 }
 

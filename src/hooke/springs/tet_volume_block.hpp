@@ -16,9 +16,11 @@ Eigen::Matrix<double, 3, 4> tet_volume_gradient(const Eigen::Matrix<double, 3, 4
 class TetVolumeBlock final : public model::TermBlock {
  public:
   /// @param tets        #T x 4 node indices of positively oriented tets
-  /// @param stiffness   k_V per tet, J, >= 0
+  /// @param stiffness   k_V per tet, J, finite; negative where a model takes volumetric stiffness away from its
+  ///                    springs (any-nu-tet below nu = 1/4: the energy is then concave in V, bounded only by the
+  ///                    springs, docs/methods/any_nu.md)
   /// @param rest_volume V0 per tet, m^3, > 0
-  /// @throws InvalidArgument on mismatched sizes, a negative k_V or a non-positive V0
+  /// @throws InvalidArgument on mismatched sizes, a non-finite k_V or a non-positive V0
   TetVolumeBlock(RowMatXi tets, VecX stiffness, VecX rest_volume);
 
   std::string_view name() const override { return "tet-volume"; }
