@@ -35,6 +35,7 @@ struct NewtonSolver::Impl {
   long cg_iterations = 0;             // during the current solve or direction
   std::vector<int> cg_block_offsets;  // per DOF and block column: offset in the Newton matrix's values, or -1
   Eigen::Index cg_pattern_nonzeros = -1;
+  bool cg_blocked3 = false;  // the Newton matrix is made of whole 3 x 3 node blocks (detail::node_blocked)
 
   explicit Impl(const NewtonOptions& o) : opt(o), cholesky(o.backend) {}
 
@@ -71,6 +72,7 @@ struct NewtonSolver::Impl {
     const Eigen::Index nd = h.rows(), n = nd / d;
     if (cg_pattern_nonzeros != h.nonZeros()) {  // where each block entry sits in h's values (the pattern is fixed)
       cg_pattern_nonzeros = h.nonZeros();
+      cg_blocked3 = d == 3 && detail::node_blocked(h, 3);
       cg_block_offsets.assign(static_cast<size_t>(nd * d), -1);
       for (Eigen::Index c = 0; c < nd; ++c)
         for (SparseMatrix::InnerIterator it(h, c); it; ++it)
@@ -93,6 +95,13 @@ struct NewtonSolver::Impl {
     }
   }
 
+  void product(const SparseMatrix& h, const VecX& z, VecX& out) const {
+    if (cg_blocked3)
+      detail::multiply_blocked3(h, z, out);
+    else
+      detail::multiply(h, z, out);
+  }
+
   void precondition(const VecX& r, VecX& z, int d) const {
     for (Eigen::Index i = 0; i < r.size() / d; ++i)
       for (int a = 0; a < d; ++a) {
@@ -111,7 +120,7 @@ struct NewtonSolver::Impl {
       x.setZero(nd);
     }
     block_preconditioner(h, d);
-    detail::multiply(h, x, cg_q);
+    product(h, x, cg_q);
     cg_r = -g - cg_q;
     const double target = tolerance * g.norm();
     precondition(cg_r, cg_z, d);
@@ -119,7 +128,7 @@ struct NewtonSolver::Impl {
     double rz = cg_r.dot(cg_z);
     for (Eigen::Index k = 0; k < 4 * nd && cg_r.norm() > target; ++k) {
       ++cg_iterations;
-      detail::multiply(h, cg_p, cg_q);
+      product(h, cg_p, cg_q);
       const double curvature = cg_p.dot(cg_q);
       if (!(curvature > 0.0)) return false;
       const double alpha = rz / curvature;

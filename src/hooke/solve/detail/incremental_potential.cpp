@@ -64,7 +64,7 @@ SparseMatrix& IncrementalPotential::newton_matrix(const VecX& z, bool project) {
   const double mass_factor = m_w + (m_dt > 0.0 ? m_s.dyn.mass_damping / m_dt : 0.0);
   for (Eigen::Index i = 0; i < m_s.nd; ++i)
     values[a.diagonal()[static_cast<size_t>(i)]] += mass_factor * m_s.dyn.mass(i);
-  constrain(a.matrix(), m_s.problem.fixed_dofs, 1);
+  m_constraint.apply(a.matrix(), m_s.problem.fixed_dofs, 1);
   return a.matrix();
 }
 

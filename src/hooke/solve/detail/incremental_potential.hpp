@@ -4,6 +4,7 @@
 // x_hat = x_n + dt v_n (fixed DOFs at their targets), whose minimiser is x_{n+1}; or, with w = 0 and dt = 0, the
 // static potential E(z) - f.(z - X) of a quasi-static step.
 #include <hooke/solve/detail/simulation_state.hpp>
+#include <hooke/solve/detail/sparse_ops.hpp>
 #include <hooke/solve/newton.hpp>
 
 namespace hooke::solve::detail {
@@ -32,6 +33,7 @@ class IncrementalPotential final : public NewtonObjective {
   SimulationState& m_s;
   double m_w = 0.0, m_dt = 0.0, m_size = 1.0, m_scale = -1.0, m_load = 0.0;
   VecX m_x_n, m_x_hat, m_dz, m_damping;  // start, inertial target, scratch
+  Constraint m_constraint;               // the fixed DOFs' rows and columns in the Newton matrix
 };
 
 }  // namespace hooke::solve::detail
