@@ -70,6 +70,28 @@ TEST(Validate, UnusedNodesAreReported) {
   EXPECT_EQ(r.unused_nodes[0], 4);
 }
 
+// Issue 16 item 6: a cracked mesh (two triangles meeting along an edge whose nodes are duplicated) passed without a
+// word. The pairs are found even where round-off moved one copy by 1e-15 of the size, and a mesh whose nodes are
+// merely close (1e-9 of the size) has none.
+TEST(Validate, CoincidentNodesAreReported) {
+  RowMatX nodes(6, 2);
+  nodes << 0, 0, 1, 0, 0, 1, 1, 0, 1, 1, 0, 1 + 1e-15;
+  RowMatXi tris(2, 3);
+  tris << 0, 1, 2, 3, 4, 5;
+  Mesh cracked = make_mesh(ElementKind::kTriangle, nodes, tris);
+  const ValidationReport r = validate(cracked);
+  ASSERT_EQ(r.coincident_nodes.size(), 2u);
+  EXPECT_EQ(r.coincident_nodes[0], (std::array<int, 2>{1, 3}));
+  EXPECT_EQ(r.coincident_nodes[1], (std::array<int, 2>{2, 5}));
+
+  nodes(3, 0) = 1 + 1e-9;
+  nodes(5, 1) = 1 + 1e-9;
+  Mesh close = make_mesh(ElementKind::kTriangle, nodes, tris);
+  EXPECT_TRUE(validate(close).coincident_nodes.empty());
+  Mesh whole = rectangle_triangles(1, 1, 4, 4);
+  EXPECT_TRUE(validate(whole).coincident_nodes.empty());
+}
+
 TEST(Validate, NonFiniteCoordinateIsRejected) {
   Mesh m = tet_box(1, 1, 1, 1, 1, 1);
   m.nodes(3, 1) = std::numeric_limits<double>::quiet_NaN();

@@ -1,4 +1,5 @@
 #include <hooke/core/error.hpp>
+#include <hooke/io/detail/extension.hpp>
 #include <hooke/io/mesh_io.hpp>
 #include <hooke/io/obj.hpp>
 #include <hooke/io/off.hpp>
@@ -9,11 +10,7 @@
 namespace hooke::io {
 namespace {
 
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
+using detail::lower_extension;
 
 [[noreturn]] void unknown(const std::filesystem::path& path) {
   throw InvalidArgument("cannot tell the format of '" + path.string() +

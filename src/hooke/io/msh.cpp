@@ -53,17 +53,15 @@ struct MshParser {
     xyz.insert(xyz.end(), {x, y, z});
   }
 
-  void add_element(std::int64_t type, const std::int64_t* tags, int region) {
-    if (type == 2) {
-      raw.triangles.push_back({node(tags[0]), node(tags[1]), node(tags[2])});
-      raw.triangle_region.push_back(region);
-    } else if (type == 3) {
-      raw.quads.push_back({node(tags[0]), node(tags[1]), node(tags[2]), node(tags[3])});
-      raw.quad_region.push_back(region);
-    } else if (type == 4) {
-      raw.tets.push_back({node(tags[0]), node(tags[1]), node(tags[2]), node(tags[3])});
-      raw.tet_region.push_back(region);
-    }
+  // Keeps triangles, quads and tets (other types are skipped); `number` is the file's element tag.
+  void add_element(std::int64_t type, const std::int64_t* tags, int region, std::int64_t number) {
+    const mesh::ElementOrigin o{number, binary ? 0 : r.line()};
+    if (type == 2)
+      raw.add_triangle({node(tags[0]), node(tags[1]), node(tags[2])}, region, o);
+    else if (type == 3)
+      raw.add_quad({node(tags[0]), node(tags[1]), node(tags[2]), node(tags[3])}, region, o);
+    else if (type == 4)
+      raw.add_tet({node(tags[0]), node(tags[1]), node(tags[2]), node(tags[3])}, region, o);
   }
 
   int type_nodes(std::int64_t type) {
@@ -127,20 +125,20 @@ struct MshParser {
         if (count <= 0 || ntags < 0) r.fail_at_byte("invalid element block header");
         const int nn = type_nodes(type);
         for (int e = 0; e < count; ++e) {
-          r.binary<int>("an element tag");
+          const int number = r.binary<int>("an element tag");
           int region = 0;
           for (int t = 0; t < ntags; ++t) {
             const int v = r.binary<int>("element tags");
             if (t == 0) region = v;
           }
           for (int k = 0; k < nn; ++k) tags[k] = r.binary<int>("element nodes");
-          add_element(type, tags, region);
+          add_element(type, tags, region, number);
         }
         done += count;
       }
     } else {
       for (std::int64_t e = 0; e < n; ++e) {
-        r.integer("an element tag");
+        const std::int64_t number = r.integer("an element tag");
         const std::int64_t type = r.integer("an element type");
         const std::int64_t ntags = r.integer("the number of element tags");
         if (ntags < 0 || ntags > 64) r.fail("invalid number of element tags");
@@ -151,7 +149,7 @@ struct MshParser {
         }
         const int nn = type_nodes(type);
         for (int k = 0; k < nn; ++k) tags[k] = r.integer("an element node");
-        add_element(type, tags, region);
+        add_element(type, tags, region, number);
       }
     }
     expect_end("Elements");
@@ -255,9 +253,9 @@ struct MshParser {
       const auto it = entity_physical.find({dim, entity});
       const int region = it == entity_physical.end() ? 0 : it->second;
       for (std::uint64_t e = 0; e < n; ++e) {
-        size_value("an element tag");
+        const auto number = static_cast<std::int64_t>(size_value("an element tag"));
         for (int k = 0; k < nn; ++k) tags[k] = static_cast<std::int64_t>(size_value("an element node"));
-        add_element(type, tags, region);
+        add_element(type, tags, region, number);
       }
     }
     expect_end("Elements");

@@ -47,11 +47,13 @@ mesh::Mesh read_obj(const std::filesystem::path& path) {
     }
   }
   detail::RawElements raw;
-  for (const auto& f : faces) {
+  for (size_t k = 0; k < faces.size(); ++k) {
+    const std::vector<int>& f = faces[k];
+    const mesh::ElementOrigin o{static_cast<std::int64_t>(k) + 1, face_line[k]};
     if (f.size() == 3)
-      raw.triangles.push_back({f[0], f[1], f[2]});
+      raw.add_triangle({f[0], f[1], f[2]}, 0, o);
     else
-      raw.quads.push_back({f[0], f[1], f[2], f[3]});
+      raw.add_quad({f[0], f[1], f[2], f[3]}, 0, o);
   }
   RowMatX nodes(static_cast<Eigen::Index>(xyz.size() / 3), 3);
   for (Eigen::Index i = 0; i < nodes.size(); ++i) nodes.data()[i] = xyz[static_cast<size_t>(i)];

@@ -15,6 +15,10 @@ mesh::Mesh read_off(const std::filesystem::path& path) {
   const std::int64_t nf = r.integer("the face count", '#');
   r.integer("the edge count", '#');
   if (nv < 0 || nf < 0) r.fail("negative counts");
+  // A vertex takes at least 6 bytes ("0 0 0\n"), a face at least 8 ("3 0 1 2\n"): counts that cannot fit in the
+  // file are refused before anything is allocated for them (issue 16 item 3).
+  r.bounded_count(static_cast<std::uint64_t>(nv), 6, "the vertex count");
+  r.bounded_count(static_cast<std::uint64_t>(nf), 8, "the face count");
   RowMatX nodes(nv, 3);
   for (std::int64_t i = 0; i < nv; ++i)
     for (int c = 0; c < 3; ++c) nodes(i, c) = r.number("a vertex coordinate", '#');
@@ -28,11 +32,12 @@ mesh::Mesh read_off(const std::filesystem::path& path) {
       if (i < 0 || i >= nv) r.fail("vertex index " + std::to_string(i) + " is out of range");
       v[static_cast<size_t>(k)] = static_cast<int>(i);
     }
+    const mesh::ElementOrigin o{f + 1, r.line()};
     while (!r.at_end_of_line()) r.token('#');  // optional colour
     if (n == 3)
-      raw.triangles.push_back({v[0], v[1], v[2]});
+      raw.add_triangle({v[0], v[1], v[2]}, 0, o);
     else
-      raw.quads.push_back(v);
+      raw.add_quad(v, 0, o);
   }
   return detail::assemble(r.name(), nodes, std::move(raw));
 }

@@ -58,7 +58,7 @@ mesh::Mesh read_stl(const std::filesystem::path& path) {
         v = w.add(p);
       }
       r.skip_bytes(2, "an attribute count");
-      raw.triangles.push_back(tri);
+      raw.add_triangle(tri, 0, {static_cast<std::int64_t>(t) + 1, 0});
     }
   } else {
     if (r.token() != "solid")
@@ -68,6 +68,7 @@ mesh::Mesh read_stl(const std::filesystem::path& path) {
       const std::string_view t = r.expect_token("'facet' or 'endsolid'");
       if (t == "endsolid") break;
       if (t != "facet") r.fail("expected 'facet' or 'endsolid', found '" + std::string(t) + "'");
+      const std::int64_t facet_line = r.line();
       r.rest_of_line();  // normal
       if (r.expect_token("'outer loop'") != "outer" || r.expect_token("'outer loop'") != "loop")
         r.fail("expected 'outer loop'");
@@ -80,7 +81,7 @@ mesh::Mesh read_stl(const std::filesystem::path& path) {
       }
       if (r.expect_token("'endloop'") != "endloop") r.fail("expected 'endloop' (STL facets must be triangles)");
       if (r.expect_token("'endfacet'") != "endfacet") r.fail("expected 'endfacet'");
-      raw.triangles.push_back(tri);
+      raw.add_triangle(tri, 0, {static_cast<std::int64_t>(raw.triangles.size()) + 1, facet_line});
     }
   }
   return detail::assemble(r.name(), w.nodes(), std::move(raw));

@@ -1,17 +1,33 @@
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <hooke/core/atomic_file.hpp>
 #include <hooke/io/detail/assemble.hpp>
+#include <hooke/io/detail/extension.hpp>
 #include <hooke/io/detail/reader.hpp>
 #include <hooke/io/tetgen.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <hooke/mesh/topology.hpp>
 #include <iomanip>
+#include <limits>
 
 namespace hooke::io {
 namespace {
 
 using detail::Reader;
 
-std::filesystem::path with_ext(std::filesystem::path p, const char* ext) { return p.replace_extension(ext); }
+// The sibling file with extension `ext` (lower case), in upper case when `p`'s own extension is (MESH.NODE beside
+// MESH.ELE).
+std::filesystem::path with_ext(std::filesystem::path p, const char* ext) {
+  const std::string own = p.extension().string();
+  const bool upper = own.size() > 1 && std::all_of(own.begin() + 1, own.end(), [](char c) {
+                       return std::isupper(static_cast<unsigned char>(c)) != 0;
+                     });
+  std::string e = ext;
+  if (upper)
+    for (char& c : e) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return p.replace_extension(e);
+}
 
 struct NodeFile {
   RowMatX nodes;
@@ -26,6 +42,8 @@ NodeFile read_node_file(const std::filesystem::path& path) {
   const std::int64_t markers = r.integer("the boundary-marker flag", '#');
   if (n < 0) r.fail("negative number of points");
   if (dim != 3 && dim != 2) r.fail("dimension must be 2 or 3, found " + std::to_string(dim));
+  // A point is at least its index and dim coordinates, 2 bytes each ("1 0 0 0\n"), checked before allocating.
+  r.bounded_count(static_cast<std::uint64_t>(n), static_cast<size_t>(2 * (1 + dim)), "the number of points");
   NodeFile nf;
   nf.nodes = RowMatX::Zero(n, 3);
   for (std::int64_t i = 0; i < n; ++i) {
@@ -50,21 +68,32 @@ std::array<int, K> indices(Reader& r, int base, Eigen::Index nv) {
   return v;
 }
 
+// A region attribute or boundary marker as an int tag; a ParseError when it is not a whole number in int's range
+// (casting it unchecked is undefined behaviour).
+int region_tag(const Reader& r, double v) {
+  if (!(v >= std::numeric_limits<int>::min() && v <= std::numeric_limits<int>::max()) || v != std::floor(v))
+    r.fail("region attribute or marker " + std::to_string(v) + " is not a whole number in the range of int");
+  return static_cast<int>(v);
+}
+
 }  // namespace
 
 mesh::Mesh read_tetgen(const std::filesystem::path& path) {
   const NodeFile nf = read_node_file(with_ext(path, ".node"));
   detail::RawElements raw;
   std::filesystem::path source;
-  if (path.extension() == ".face") {
+  if (detail::lower_extension(path) == ".face") {
     source = path;
     Reader r = Reader::open(path);
     const std::int64_t n = r.integer("the number of faces", '#');
     const std::int64_t markers = r.integer("the boundary-marker flag", '#');
+    if (n < 0) r.fail("negative number of faces");
+    r.bounded_count(static_cast<std::uint64_t>(n), 8, "the number of faces");  // "1 1 2 3\n"
     for (std::int64_t f = 0; f < n; ++f) {
-      r.integer("a face index", '#');
-      raw.triangles.push_back(indices<3>(r, nf.base, nf.nodes.rows()));
-      raw.triangle_region.push_back(markers ? static_cast<int>(r.integer("a face marker", '#')) : 0);
+      const std::int64_t number = r.integer("a face index", '#');
+      const mesh::ElementOrigin o{number, r.line()};
+      const std::array<int, 3> v = indices<3>(r, nf.base, nf.nodes.rows());
+      raw.add_triangle(v, markers ? region_tag(r, static_cast<double>(r.integer("a face marker", '#'))) : 0, o);
     }
   } else {
     source = with_ext(path, ".ele");
@@ -73,15 +102,18 @@ mesh::Mesh read_tetgen(const std::filesystem::path& path) {
     const std::int64_t npt = r.integer("nodes per tetrahedron", '#');
     const std::int64_t nattr = r.integer("the number of attributes", '#');
     if (npt != 4) r.fail("only 4-node tetrahedra are supported, found " + std::to_string(npt) + " nodes per tet");
+    if (n < 0) r.fail("negative number of tetrahedra");
+    r.bounded_count(static_cast<std::uint64_t>(n), 10, "the number of tetrahedra");  // "1 1 2 3 4\n"
     for (std::int64_t t = 0; t < n; ++t) {
-      r.integer("a tetrahedron index", '#');
-      raw.tets.push_back(indices<4>(r, nf.base, nf.nodes.rows()));
+      const std::int64_t number = r.integer("a tetrahedron index", '#');
+      const mesh::ElementOrigin o{number, r.line()};
+      const std::array<int, 4> v = indices<4>(r, nf.base, nf.nodes.rows());
       int region = 0;
       for (std::int64_t a = 0; a < nattr; ++a) {
-        const double v = r.number("a tetrahedron attribute", '#');
-        if (a == 0) region = static_cast<int>(v);
+        const double attribute = r.number("a tetrahedron attribute", '#');
+        if (a == 0) region = region_tag(r, attribute);
       }
-      raw.tet_region.push_back(region);
+      raw.add_tet(v, region, o);
     }
   }
   mesh::Mesh m = detail::assemble(source.string(), nf.nodes, std::move(raw));

@@ -1,10 +1,13 @@
 #include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <hooke/core/atomic_file.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/io/detail/assemble.hpp>
 #include <hooke/io/detail/reader.hpp>
 #include <hooke/io/vtu.hpp>
 #include <iomanip>
+#include <limits>
 #include <map>
 
 namespace hooke::io {
@@ -50,6 +53,18 @@ std::map<std::string, std::string> attributes(const std::string& tag) {
     p = q2 + 1;
   }
   return out;
+}
+
+// `value` from the file as a whole number in [lo, hi]; a ParseError naming `what` otherwise (casting an out-of-range
+// double to an integer is undefined behaviour, issue 16 item 4).
+// The error names the line of the array's <DataArray> tag (`at`).
+double whole_number(const detail::Reader& r, size_t at, double value, double lo, double hi, const std::string& what) {
+  if (!(value >= lo && value <= hi) || value != std::floor(value)) {
+    char text[160];
+    std::snprintf(text, sizeof text, " is %.17g, not a whole number in [%.17g, %.17g]", value, lo, hi);
+    r.fail_at_offset(at, what + text);
+  }
+  return value;
 }
 
 }  // namespace
@@ -127,6 +142,7 @@ VtuContents read_vtu(const std::filesystem::path& path) {
 
   struct Array {
     std::string name, section;
+    size_t at = 0;  // where its <DataArray> tag starts
     int components = 1;
     std::vector<double> values;
   };
@@ -155,6 +171,7 @@ VtuContents read_vtu(const std::filesystem::path& path) {
       Array a;
       a.name = attr.count("Name") ? attr["Name"] : "";
       a.section = section;
+      a.at = pos;
       a.components = 1;
       if (attr.count("NumberOfComponents")) {
         const std::string& c = attr["NumberOfComponents"];
@@ -162,13 +179,13 @@ VtuContents read_vtu(const std::filesystem::path& path) {
         if (ec != std::errc() || parsed != c.data() + c.size() || a.components < 1 || a.components > 9)
           r.fail_at_offset(pos, "DataArray '" + a.name + "' has NumberOfComponents=\"" + c + "\" (1 to 9 expected)");
       }
-      detail::Reader body(r.name(), s.substr(0, end));
-      body.skip_bytes(close + 1, "");
+      r.window(close + 1, end);  // the array's text, read in place (a copy per array was quadratic, issue 16)
       while (true) {
-        body.skip_space();
-        if (body.at_end()) break;
-        a.values.push_back(body.number("a data value"));
+        r.skip_space();
+        if (r.at_end()) break;
+        a.values.push_back(r.number("a data value"));
       }
+      r.window(end, s.size());
       arrays.push_back(std::move(a));
       pos = end;
     } else {
@@ -190,19 +207,25 @@ VtuContents read_vtu(const std::filesystem::path& path) {
   detail::RawElements raw;
   size_t start = 0;
   if (offsets->values.size() != types->values.size()) r.fail("offsets and types differ in length");
+  std::vector<int> v;
   for (size_t c = 0; c < types->values.size(); ++c) {
-    const size_t stop = static_cast<size_t>(offsets->values[c]);
-    const int type = static_cast<int>(types->values[c]);
-    if (stop > conn->values.size() || stop < start) r.fail("offsets do not match the connectivity array");
-    std::vector<int> v;
-    for (size_t k = start; k < stop; ++k) v.push_back(static_cast<int>(conn->values[k]));
+    const std::string cell = "cell " + std::to_string(c);
+    const auto stop = static_cast<size_t>(whole_number(
+        r, offsets->at, offsets->values[c], static_cast<double>(start), static_cast<double>(conn->values.size()),
+        cell + "'s offset (at least the previous offset, at most the connectivity's length)"));
+    const int type = static_cast<int>(whole_number(r, types->at, types->values[c], 0.0, 255.0, cell + "'s VTK type"));
+    v.clear();
+    for (size_t k = start; k < stop; ++k)
+      v.push_back(static_cast<int>(
+          whole_number(r, conn->at, conn->values[k], 0.0, static_cast<double>(nv) - 1.0, cell + "'s node index")));
     start = stop;
+    const mesh::ElementOrigin o{static_cast<std::int64_t>(c), 0};  // the cell id ParaView shows
     if (type == 5 && v.size() == 3) {
-      raw.triangles.push_back({v[0], v[1], v[2]});
+      raw.add_triangle({v[0], v[1], v[2]}, 0, o);
     } else if (type == 9 && v.size() == 4) {
-      raw.quads.push_back({v[0], v[1], v[2], v[3]});
+      raw.add_quad({v[0], v[1], v[2], v[3]}, 0, o);
     } else if (type == 10 && v.size() == 4) {
-      raw.tets.push_back({v[0], v[1], v[2], v[3]});
+      raw.add_tet({v[0], v[1], v[2], v[3]}, 0, o);
     } else if (type != 1 && type != 3) {  // vertices and lines are skipped
       r.fail("cell " + std::to_string(c) + " has VTK type " + std::to_string(type) +
              " (hooke reads triangles 5, quads 9 and tets 10)");
@@ -215,7 +238,10 @@ VtuContents read_vtu(const std::filesystem::path& path) {
     if (a.section != "PointData" && a.section != "CellData") continue;
     Field f{a.name, a.components, Eigen::Map<const VecX>(a.values.data(), static_cast<Eigen::Index>(a.values.size()))};
     if (a.section == "CellData" && a.name == "region" && f.values.size() == ne) {
-      out.mesh.region = f.values.cast<int>();
+      out.mesh.region.resize(ne);
+      for (Eigen::Index e = 0; e < ne; ++e)
+        out.mesh.region(e) = static_cast<int>(whole_number(r, a.at, f.values(e), std::numeric_limits<int>::min(),
+                                                           std::numeric_limits<int>::max(), "a region tag"));
       continue;
     }
     (a.section == "PointData" ? out.point_data : out.cell_data).push_back(std::move(f));

@@ -28,6 +28,14 @@ Mesh make_mesh(ElementKind kind, RowMatX nodes, RowMatXi elements, std::string s
 
 std::string element_label(const Mesh& mesh, int element) {
   std::string label = std::string(element_kind_name(mesh.kind)) + " " + std::to_string(element);
+  if (mesh.origin.size() == static_cast<size_t>(mesh.element_count()) && element >= 0 &&
+      element < mesh.element_count()) {
+    const ElementOrigin& o = mesh.origin[static_cast<size_t>(element)];
+    label += " (element " + std::to_string(o.number);
+    if (o.line > 0) label += ", line " + std::to_string(o.line);
+    if (!mesh.source.empty()) label += " of " + mesh.source;
+    return label + ")";
+  }
   if (!mesh.source.empty()) label += " of " + mesh.source;
   return label;
 }

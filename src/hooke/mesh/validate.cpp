@@ -1,5 +1,6 @@
 #include <hooke/mesh/validate.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
@@ -60,6 +61,28 @@ double element_quality(const Mesh& mesh, int e) {
   }
   return 0.0;
 }
+
+namespace {
+
+// Pairs of used nodes closer than 1e-12 of the bounding-box diagonal: sorted by x, each node compared with those
+// whose x is within the tolerance (O(n log n) for any mesh without long runs of equal x).
+std::vector<std::array<int, 2>> coincident_nodes(const Mesh& mesh, const std::vector<char>& used) {
+  std::vector<int> order;
+  for (int i = 0; i < mesh.node_count(); ++i)
+    if (used[static_cast<size_t>(i)]) order.push_back(i);
+  std::vector<std::array<int, 2>> pairs;
+  if (order.size() < 2) return pairs;
+  const double tolerance = 1e-12 * (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return mesh.nodes(a, 0) < mesh.nodes(b, 0); });
+  for (size_t k = 0; k < order.size(); ++k)
+    for (size_t j = k + 1; j < order.size() && mesh.nodes(order[j], 0) - mesh.nodes(order[k], 0) <= tolerance; ++j)
+      if ((mesh.nodes.row(order[j]) - mesh.nodes.row(order[k])).norm() <= tolerance)
+        pairs.push_back({std::min(order[k], order[j]), std::max(order[k], order[j])});
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+}  // namespace
 
 ValidationReport validate(Mesh& mesh, const ValidationOptions& options) {
   ValidationReport report;
@@ -128,6 +151,13 @@ ValidationReport validate(Mesh& mesh, const ValidationOptions& options) {
                         : " elements had negative volume; node order reversed"));
   }
 
+  report.coincident_nodes = coincident_nodes(mesh, used);
+  if (!report.coincident_nodes.empty()) {
+    const auto [a, b] = report.coincident_nodes.front();
+    log_warning(where + ": " + std::to_string(report.coincident_nodes.size()) +
+                " pair(s) of nodes sit at the same point (first: nodes " + std::to_string(a) + " and " +
+                std::to_string(b) + "); the mesh is cracked there, its elements on either side are not connected");
+  }
   for (int i = 0; i < nv; ++i)
     if (!used[i]) report.unused_nodes.push_back(i);
   if (!report.unused_nodes.empty())

@@ -1,5 +1,6 @@
 #pragma once
 /// Mesh validation on load: indices, finite coordinates, degenerate and inverted elements, orientation.
+#include <array>
 #include <hooke/mesh/mesh.hpp>
 #include <vector>
 
@@ -17,12 +18,15 @@ struct ValidationOptions {
 struct ValidationReport {
   int reoriented_elements = 0;    ///< elements whose node order was reversed
   std::vector<int> unused_nodes;  ///< nodes referenced by no element (kept, reported)
+  /// Pairs of used nodes at the same point (closer than 1e-12 of the bounding-box diagonal), lower index first:
+  /// a cracked mesh, whose elements on either side are not connected (kept, reported).
+  std::vector<std::array<int, 2>> coincident_nodes;
 };
 
 /// Checks `mesh` in place and makes 2D elements counter-clockwise.
 /// @throws InvalidMesh naming the element (and mesh.source) for: an index out of range, a repeated node,
 ///   a non-finite coordinate, a degenerate element, a non-convex quad, or a tet inverted against the rest
-///   of the mesh. Unused nodes are only reported (log warning and report).
+///   of the mesh. Unused and coincident nodes are only reported (log warning and report).
 ValidationReport validate(Mesh& mesh, const ValidationOptions& options = {});
 
 /// Shape quality of element `e` in [0, 1] (signed: negative when inverted); see ValidationOptions.

@@ -29,6 +29,7 @@ mesh::Mesh assemble(const std::string& source, const RowMatX& nodes, RawElements
     m.nodes = nodes;
     m.elements = rows_of(raw.tets);
     m.region = regions_of(raw.tet_region, raw.tets.size());
+    if (raw.tet_origin.size() == raw.tets.size()) m.origin = std::move(raw.tet_origin);
     return m;
   }
   if (raw.triangles.empty() && raw.quads.empty())
@@ -42,10 +43,12 @@ mesh::Mesh assemble(const std::string& source, const RowMatX& nodes, RawElements
       m.kind = ElementKind::kQuad;
       m.elements = rows_of(raw.quads);
       m.region = regions_of(raw.quad_region, raw.quads.size());
+      if (raw.quad_origin.size() == raw.quads.size()) m.origin = std::move(raw.quad_origin);
     } else {
       m.kind = ElementKind::kTriangle;
       m.elements = rows_of(raw.triangles);
       m.region = regions_of(raw.triangle_region, raw.triangles.size());
+      if (raw.triangle_origin.size() == raw.triangles.size()) m.origin = std::move(raw.triangle_origin);
     }
     return m;
   }
@@ -55,6 +58,7 @@ mesh::Mesh assemble(const std::string& source, const RowMatX& nodes, RawElements
   m.nodes = nodes;
   m.elements = rows_of(raw.triangles);
   m.region = regions_of(raw.triangle_region, raw.triangles.size());
+  if (raw.triangle_origin.size() == raw.triangles.size()) m.origin = std::move(raw.triangle_origin);
   return m;
 }
 

@@ -34,12 +34,12 @@ void Reader::fail_at_offset(size_t offset, const std::string& what) const {
 }
 
 void Reader::skip_space(char comment) {
-  while (m_pos < m_data.size()) {
+  while (m_pos < m_end) {
     const char c = m_data[m_pos];
     if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
       ++m_pos;
     } else if (comment != 0 && c == comment) {
-      while (m_pos < m_data.size() && m_data[m_pos] != '\n') ++m_pos;
+      while (m_pos < m_end && m_data[m_pos] != '\n') ++m_pos;
     } else {
       break;
     }
@@ -49,7 +49,7 @@ void Reader::skip_space(char comment) {
 std::string_view Reader::token(char comment) {
   skip_space(comment);
   const size_t start = m_pos;
-  while (m_pos < m_data.size()) {
+  while (m_pos < m_end) {
     const char c = m_data[m_pos];
     if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || (comment != 0 && c == comment)) break;
     ++m_pos;
@@ -83,15 +83,15 @@ std::int64_t Reader::integer(const char* what, char comment) {
 
 std::string_view Reader::rest_of_line() {
   const size_t start = m_pos;
-  while (m_pos < m_data.size() && m_data[m_pos] != '\n') ++m_pos;
+  while (m_pos < m_end && m_data[m_pos] != '\n') ++m_pos;
   std::string_view s = std::string_view(m_data).substr(start, m_pos - start);
-  if (m_pos < m_data.size()) ++m_pos;
+  if (m_pos < m_end) ++m_pos;
   if (!s.empty() && s.back() == '\r') s.remove_suffix(1);
   return s;
 }
 
 bool Reader::at_end_of_line() const {
-  for (size_t p = m_pos; p < m_data.size(); ++p) {
+  for (size_t p = m_pos; p < m_end; ++p) {
     if (m_data[p] == '\n') return true;
     if (m_data[p] != ' ' && m_data[p] != '\t' && m_data[p] != '\r') return false;
   }

@@ -1,6 +1,7 @@
 #pragma once
 // A whole file in memory with a cursor, for parsers that mix text tokens and binary blocks (MSH) or are
 // plain text (TetGen, OFF, STL, VTU). Errors name the file and the line (text) or the byte (binary).
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -12,16 +13,23 @@ namespace hooke::io::detail {
 
 class Reader {
  public:
-  Reader(std::string name, std::string content) : m_name(std::move(name)), m_data(std::move(content)) {}
+  Reader(std::string name, std::string content)
+      : m_name(std::move(name)), m_data(std::move(content)), m_end(m_data.size()) {}
   static Reader open(const std::filesystem::path& path);
 
   const std::string& name() const { return m_name; }
   const std::string& data() const { return m_data; }
   size_t offset() const { return m_pos; }
   std::int64_t line() const;  // 1-based line of the cursor
-  bool at_end() const { return m_pos >= m_data.size(); }
-  // Bytes left after the cursor.
-  size_t remaining() const { return m_pos < m_data.size() ? m_data.size() - m_pos : 0; }
+  bool at_end() const { return m_pos >= m_end; }
+  // Bytes left after the cursor (before the end of the window, see `window`).
+  size_t remaining() const { return m_pos < m_end ? m_end - m_pos : 0; }
+  // Confines reading to bytes [begin, end) of the file, the cursor at `begin`, without copying (a section of an XML
+  // file); window(0, data().size()) lifts it. Errors still name the file's line.
+  void window(size_t begin, size_t end) {
+    m_end = std::min(end, m_data.size());
+    m_pos = std::min(begin, m_end);
+  }
   // A count declared by the file, checked before anything is allocated or skipped for it: `count` items of at least
   // `min_bytes` bytes each must fit in the bytes left (no multiplication, so no wrap-around). Fails naming `what`.
   std::uint64_t bounded_count(std::uint64_t count, size_t min_bytes, const char* what) const {
@@ -70,6 +78,7 @@ class Reader {
  private:
   std::string m_name;
   std::string m_data;
+  size_t m_end;  // the end of the window
   size_t m_pos = 0;
   mutable size_t m_counted_to = 0;              // line(): newlines before this offset are counted
   mutable std::int64_t m_counted_newlines = 0;  // in m_counted_newlines
