@@ -43,7 +43,7 @@ int run_bench(const BenchCli& o) {
   std::printf("\nBullet's soft body at the same dt: build/release/bench/hooke_bench --benchmark_filter=Peer\n");
   if (!o.out_dir.empty()) {
     const std::filesystem::path dir(o.out_dir);
-    std::filesystem::create_directories(dir);
+    create_output_folder(dir);
     write_file_atomically(dir / "bench.md", [&](std::ostream& out) { out << markdown; });
     nlohmann::json j;
     j["triad_gbps"] = report.triad_gbps;

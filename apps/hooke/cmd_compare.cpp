@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <hooke/core/atomic_file.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/experiments/compare.hpp>
@@ -46,7 +47,7 @@ void print_comparison(const CompareCli& o, const calibrate::CalibratedModel& mod
 void write_outputs(const CompareCli& o, const calibrate::CalibratedModel& model, const experiments::Comparison& c) {
   const mesh::Mesh& m = model.mesh;
   const std::filesystem::path dir(o.out_dir);
-  std::filesystem::create_directories(dir);
+  create_output_folder(dir);
   const VecX rest = Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size());
   io::write_vtu(dir / "compare.vtu", m,
                 {{"fem_displacement", m.dim(), c.fem_positions - rest},
@@ -69,6 +70,7 @@ void write_outputs(const CompareCli& o, const calibrate::CalibratedModel& model,
 int run_compare(const CompareCli& o) {
   if (std::isnan(o.traction) == std::isnan(o.strain))
     throw InvalidArgument("give exactly one of --traction and --strain");
+  if (!std::isnan(o.strain) && !(o.strain > 0.0)) throw InvalidArgument("--strain must be > 0");
   const calibrate::CalibratedModel model = load_model(o.in);
   experiments::CompareOptions co;
   co.load = experiments::load_kind_from_name(o.load);

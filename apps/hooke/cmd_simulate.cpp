@@ -85,6 +85,9 @@ Action add_simulate_command(CLI::App& app) {
   cmd->add_option("--newton-tolerance", o->run.simulator.newton.tolerance,
                   "implicit-euler, quasi-static: |residual| / force scale to stop Newton")
       ->capture_default_str();
+  cmd->add_option("--newton-iterations", o->run.simulator.newton.max_iterations,
+                  "implicit-euler, quasi-static: Newton iterations per step at most")
+      ->capture_default_str();
   cmd->add_option("--global-solve", o->global_solve,
                   "local-global: direct (prefactored Cholesky) or chebyshev (Chebyshev-accelerated Jacobi)")
       ->capture_default_str();
@@ -96,6 +99,8 @@ Action add_simulate_command(CLI::App& app) {
   cmd->add_option("--damping-mass", o->run.damping_mass, "Rayleigh alpha, 1/s")->capture_default_str();
   cmd->add_option("--damping-stiffness", o->run.damping_stiffness, "Rayleigh beta, s")->capture_default_str();
   cmd->add_flag("--free", o->free_body, "Do not clamp the bottom nodes");
+  cmd->add_flag("--allow-unconverged", o->run.allow_unconverged,
+                "Keep going (with a warning) when a step ends above the Newton tolerance instead of failing (exit 3)");
   cmd->add_flag(
       "--no-reorder", o->no_reorder,
       "Simulate in the file's node order instead of reverse Cuthill-McKee (outputs are in file order either way)");

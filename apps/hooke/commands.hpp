@@ -46,6 +46,11 @@ void add_model_source_options(CLI::App* cmd, ModelSource& in);
 /// @throws InvalidArgument when neither or a conflicting combination is given
 calibrate::CalibratedModel load_model(const ModelSource& in);
 
+/// Every number given to an option of type FLOAT of the parsed (sub)commands is finite: "nan", "inf" and overflowing
+/// values are refused before anything runs (an unchecked NaN slips through comparisons).
+/// @throws InvalidArgument naming the option and the value
+void require_finite_numbers(const CLI::App& app);
+
 /// `hooke fem`: linear or nonlinear FEM reference solve of a load case.
 Action add_fem_command(CLI::App& app);
 /// `hooke compare`: a calibrated spring model against the FEM reference.

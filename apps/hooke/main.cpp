@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
   try {
+    hooke::cli::require_finite_numbers(app);
     if (app.got_subcommand("fem")) return fem();
     if (app.got_subcommand("mesh")) return mesh();
     if (app.got_subcommand("compare")) return compare();

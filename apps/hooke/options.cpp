@@ -1,3 +1,5 @@
+#include <cmath>
+#include <cstdlib>
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/calibrate/model_file.hpp>
 #include <hooke/core/error.hpp>
@@ -7,6 +9,17 @@
 #include "commands.hpp"
 
 namespace hooke::cli {
+
+void require_finite_numbers(const CLI::App& app) {
+  for (const CLI::Option* opt : app.get_options()) {
+    if (opt->count() == 0 || opt->get_type_name().find("FLOAT") == std::string::npos) continue;
+    for (const std::string& text : opt->results()) {
+      const double v = std::strtod(text.c_str(), nullptr);
+      if (!std::isfinite(v)) throw InvalidArgument(opt->get_name() + " must be a finite number, found '" + text + "'");
+    }
+  }
+  for (const CLI::App* sub : app.get_subcommands()) require_finite_numbers(*sub);
+}
 
 void add_model_input_options(CLI::App* cmd, ModelInput& in) {
   cmd->add_option("mesh", in.mesh_path, "Mesh file (.msh, .vtu, .node/.ele, .obj, .off, .stl)")->required();

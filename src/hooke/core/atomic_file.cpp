@@ -30,4 +30,22 @@ void write_file_atomically(const std::filesystem::path& path, const std::functio
   }
 }
 
+void create_output_folder(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw IoError("the output folder '" + dir.string() + "' is a file; give a folder");
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw IoError("cannot create the output folder '" + dir.string() + "'" + (ec ? ": " + ec.message() : ""));
+  // Writable: a probe file (permission bits alone do not show read-only mounts).
+  std::random_device entropy;
+  const fs::path probe = dir / (".hooke-write-test" + std::to_string(entropy() % 1000000));
+  {
+    std::ofstream out(probe);
+    if (!out) throw IoError("cannot write into the output folder '" + dir.string() + "' (is it read-only?)");
+  }
+  fs::remove(probe, ec);
+}
+
 }  // namespace hooke

@@ -14,4 +14,8 @@ namespace hooke {
 void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
                            bool binary = false);
 
+/// Makes `dir` (and its parents) an existing, writable folder for a command's outputs.
+/// @throws IoError naming `dir` when it is a file, cannot be created, or cannot be written into
+void create_output_folder(const std::filesystem::path& dir);
+
 }  // namespace hooke

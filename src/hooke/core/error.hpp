@@ -68,4 +68,11 @@ class SolverFailure : public Error {
   using Error::Error;
 };
 
+/// A result overflowed (an infinite or NaN value about to be written): nothing is written. A SolverFailure, so
+/// front ends report it like one (exit 3).
+class NonFiniteResult : public SolverFailure {
+ public:
+  using SolverFailure::SolverFailure;
+};
+
 }  // namespace hooke

@@ -141,7 +141,7 @@ void write_markdown(std::ostream& out, const Arnab2008Report& r) {
 }  // namespace
 
 void write_arnab2008_report(const std::filesystem::path& dir, const Arnab2008Report& r) {
-  std::filesystem::create_directories(dir);
+  create_output_folder(dir);
   const nlohmann::json j = {{"paper", "Arnab and Raja, A Deformable Surface Model for Soft Volume Simulation"},
                             {"seconds", r.seconds},
                             {"poisson_ratio", r.poisson_ratio},

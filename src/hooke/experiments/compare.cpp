@@ -43,7 +43,9 @@ void measure(Comparison& c, const VecX& rest, int d) {
 }
 
 double traction_of(const mesh::Mesh& mesh, const std::vector<material::Material>& materials, const CompareOptions& o) {
-  return o.strain > 0.0 ? traction_for_strain(mesh, materials, o.load, o.strain) : o.traction_pa;
+  if (o.strain != 0.0) return traction_for_strain(mesh, materials, o.load, o.strain);  // refuses <= 0, NaN
+  if (!std::isfinite(o.traction_pa)) throw InvalidArgument("the traction must be a finite number of pascals");
+  return o.traction_pa;
 }
 
 }  // namespace

@@ -11,9 +11,9 @@ namespace hooke::experiments {
 struct CompareOptions {
   calibrate::Method method = calibrate::Method::kLloydTet;  ///< how the springs are calibrated
   LoadKind load = LoadKind::kStretch;                       ///< load case
-  double traction_pa = 0.0;                                 ///< traction, Pa (ignored when strain > 0)
-  double strain = 0.0;                                      ///< > 0: traction giving this mean linear-FEM strain
-  material::Law reference = material::Law::kLinear;         ///< FEM reference law
+  double traction_pa = 0.0;                                 ///< traction, Pa (ignored when strain != 0)
+  double strain = 0.0;  ///< != 0: the traction giving this mean linear-FEM strain (then it must be > 0)
+  material::Law reference = material::Law::kLinear;  ///< FEM reference law
 };
 
 struct Comparison {

@@ -76,7 +76,7 @@ void write_figure_spec(const std::filesystem::path& dir, const Figure& figure) {
   nlohmann::json panels = nlohmann::json::array();
   for (const auto& p : figure.panels) std::visit([&](const auto& v) { panels.push_back(panel_json(v)); }, p);
   const nlohmann::json j = {{"name", figure.name}, {"title", figure.title}, {"panels", panels}};
-  std::filesystem::create_directories(dir);
+  create_output_folder(dir);
   write_file_atomically(dir / (figure.name + ".json"), [&](std::ostream& o) { o << j.dump() << '\n'; });
 }
 

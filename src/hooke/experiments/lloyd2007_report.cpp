@@ -190,7 +190,7 @@ void write_markdown(const std::filesystem::path& dir, const Lloyd2007Report& r) 
 }  // namespace
 
 void write_lloyd2007_report(const std::filesystem::path& dir, const Lloyd2007Report& report) {
-  std::filesystem::create_directories(dir);
+  create_output_folder(dir);
   for (const auto& f : report.figures) write_figure_spec(dir / "figures", f);
   write_json(dir, report);
   write_markdown(dir, report);

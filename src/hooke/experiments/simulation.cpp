@@ -112,6 +112,11 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
     s.step_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     if (!sim.positions().allFinite() || !sim.velocities().allFinite())
       fail_step("produced non-finite positions", k, o, s.stable_time_step);
+    if (!r.converged && !o.allow_unconverged)
+      throw SolverFailure("step " + std::to_string(k) + " ended above the Newton tolerance (residual " +
+                          std::to_string(r.residual) + " N after " + std::to_string(r.iterations) + " iterations, " +
+                          std::string(solve::integrator_name(o.simulator.integrator)) +
+                          "): use a smaller dt, more Newton iterations, or allow unconverged steps");
     s.not_converged += r.converged ? 0 : 1;
     s.iterations += r.iterations;
     s.beyond_stable_dt += r.beyond_stable_dt ? 1 : 0;

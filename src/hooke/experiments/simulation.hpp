@@ -23,12 +23,15 @@ struct SimulationOptions {
   VecX probe_offset;                  ///< drive the probe node by this offset, m (dim), ramped linearly
   VecX probe_force;                   ///< or push it with this force, N (dim), ramped linearly
   double influence_radius = 0.0;      ///< surface model: r of Eq. 4, m (0: half the bounding-box diagonal)
+  /// Keep going when a step ends above the Newton tolerance (counted in SimulationSummary::not_converged) instead
+  /// of failing with SolverFailure at that step.
+  bool allow_unconverged = false;
 };
 
 struct SimulationSummary {
   std::vector<double> step_ms;    ///< wall time of each step, ms
   long iterations = 0;            ///< Newton / local-global iterations over the run
-  int not_converged = 0;          ///< steps that ended above the Newton tolerance
+  int not_converged = 0;          ///< steps that ended above the Newton tolerance (only with allow_unconverged)
   int beyond_stable_dt = 0;       ///< explicit steps beyond the stability limit
   double stable_time_step = 0.0;  ///< explicit stability limit, s
   double energy_start = 0.0;      ///< kinetic + potential at t = 0, J

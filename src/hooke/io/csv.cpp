@@ -9,6 +9,8 @@ void write_node_csv(const std::filesystem::path& path, const mesh::Mesh& m, cons
   for (const Field& f : fields)
     if (f.values.size() != static_cast<Eigen::Index>(m.node_count()) * f.components)
       throw InvalidArgument("field '" + f.name + "' does not have one value set per node");
+  require_finite_positions(m.nodes, path);
+  for (const Field& f : fields) require_finite(f, path);
   write_file_atomically(path, [&](std::ostream& out) {
     static const char* kAxis[] = {"x", "y", "z"};
     out << "node";

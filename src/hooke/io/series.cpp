@@ -1,42 +1,63 @@
+#include <hooke/core/atomic_file.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/io/series.hpp>
 #include <hooke/io/vtu.hpp>
+#include <random>
 
 namespace hooke::io {
 
 namespace fs = std::filesystem;
 
-SeriesWriter::SeriesWriter(fs::path dir, mesh::Mesh mesh)
-    : m_dir(std::move(dir)), m_partial(m_dir / "frames.partial"), m_mesh(std::move(mesh)) {
+namespace {
+
+// "frames-" and 8 random hex digits: a folder name no earlier run in this folder is likely to hold.
+std::string unique_frames_name(const fs::path& dir) {
+  std::random_device entropy;
+  for (;;) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frames-%08x", static_cast<unsigned>(entropy()));
+    std::error_code ec;
+    if (!fs::exists(dir / name, ec) && !fs::exists(dir / (std::string(name) + ".partial"), ec)) return name;
+  }
+}
+
+}  // namespace
+
+SeriesWriter::SeriesWriter(fs::path dir, mesh::Mesh mesh) : m_dir(std::move(dir)), m_mesh(std::move(mesh)) {
+  create_output_folder(m_dir);
+  m_name = unique_frames_name(m_dir);
+  m_partial = m_dir / (m_name + ".partial");
   std::error_code ec;
-  fs::create_directories(m_dir, ec);
-  if (ec || !fs::is_directory(m_dir))
-    throw IoError("cannot create the output folder '" + m_dir.string() + "'" + (ec ? ": " + ec.message() : ""));
-  fs::remove_all(m_partial, ec);
   fs::create_directories(m_partial, ec);
   if (ec) throw IoError("cannot create '" + m_partial.string() + "': " + ec.message());
 }
 
 SeriesWriter::~SeriesWriter() {
   std::error_code ec;
-  if (!m_committed) fs::remove_all(m_partial, ec);
+  if (m_committed) return;
+  fs::remove_all(m_partial, ec);
+  fs::remove_all(m_dir / m_name, ec);  // renamed, but the .pvd was not written
 }
 
 void SeriesWriter::write(double time, const std::vector<Field>& point_data) {
   const std::string name = "frame_" + std::to_string(m_frames.size()) + ".vtu";
   write_vtu(m_partial / name, m_mesh, point_data);
-  m_frames.push_back({time, "frames/" + name});
+  m_frames.push_back({time, m_name + "/" + name});
 }
 
 fs::path SeriesWriter::commit() {
-  const fs::path pvd = m_dir / "simulation.pvd", frames = m_dir / "frames";
+  const fs::path pvd = m_dir / "simulation.pvd", frames = m_dir / m_name;
   std::error_code ec;
-  fs::remove(pvd, ec);  // first: a .pvd never outlives its frames
-  fs::remove_all(frames, ec);
   fs::rename(m_partial, frames, ec);
   if (ec) throw IoError("cannot rename '" + m_partial.string() + "' to '" + frames.string() + "': " + ec.message());
+  write_pvd(pvd, m_frames);  // atomic: the commit point
   m_committed = true;
-  write_pvd(pvd, m_frames);
+  // Frames that no .pvd names any more; failures to remove them leave only unreferenced files behind.
+  for (const fs::directory_entry& e : fs::directory_iterator(m_dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name != m_name && e.is_directory(ec) && (name == "frames" || name.rfind("frames-", 0) == 0))
+      fs::remove_all(e.path(), ec);
+  }
   return pvd;
 }
 

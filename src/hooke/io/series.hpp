@@ -4,12 +4,15 @@
 #include <hooke/io/field.hpp>
 #include <hooke/io/pvd.hpp>
 #include <hooke/mesh/mesh.hpp>
+#include <string>
 #include <vector>
 
 namespace hooke::io {
 
-/// Frames go to DIR/frames.partial/; commit() replaces DIR/frames/ and DIR/simulation.pvd with them (the old .pvd
-/// is removed first, so no .pvd ever names missing frames). Destroyed without commit(), it removes the partial
+/// Kill-safe at any instant: frames go to DIR/frames-ID.partial/ (ID unique to this writer); commit() renames it to
+/// DIR/frames-ID/, then replaces DIR/simulation.pvd atomically (the commit point: before it the old .pvd and its
+/// frames are whole, after it the new ones), then removes the frames no .pvd names any more (older frames-* folders,
+/// the pre-0.4 frames/ folder, partial folders of killed runs). Destroyed without commit(), it removes its own
 /// frames and leaves DIR as it was.
 class SeriesWriter {
  public:
@@ -29,6 +32,7 @@ class SeriesWriter {
 
  private:
   std::filesystem::path m_dir, m_partial;
+  std::string m_name;  // frames-ID
   mesh::Mesh m_mesh;
   std::vector<PvdFrame> m_frames;
   bool m_committed = false;

@@ -111,6 +111,9 @@ void write_vtu(const std::filesystem::path& path, const mesh::Mesh& m, const std
                const std::vector<Field>& cell_data) {
   const int ne = m.element_count();
   const Field region{"region", 1, m.region.size() == ne ? m.region.cast<double>().eval() : VecX::Zero(ne)};
+  require_finite_positions(m.nodes, path);
+  for (const auto* fields : {&point_data, &cell_data})
+    for (const Field& f : *fields) require_finite(f, path);
   write_file_atomically(path, [&](std::ostream& out) {
     write_grid(out, m.nodes, m.elements, vtk_cell_type(m.kind), point_data, cell_data, &region);
   });
@@ -127,6 +130,9 @@ void write_vtu_lines(const std::filesystem::path& path, const RowMatX& nodes,
     cells(static_cast<Eigen::Index>(k), 0) = lines[k][0];
     cells(static_cast<Eigen::Index>(k), 1) = lines[k][1];
   }
+  require_finite_positions(nodes, path);
+  for (const auto* fields : {&point_data, &cell_data})
+    for (const Field& f : *fields) require_finite(f, path);
   write_file_atomically(path, [&](std::ostream& out) {
     write_grid(out, nodes, cells, 3, point_data, cell_data, nullptr);  // VTK_LINE = 3
   });

@@ -268,7 +268,8 @@ struct NewtonSolver::Impl {
       r.residual = grad.norm();
       r.iterations = it;
       if (history) history->push_back(r.residual);
-      if (!std::isfinite(r.residual)) break;
+      // An overflowing load (a force of 1e300 N) makes the scale infinite, and every residual would pass the test.
+      if (!std::isfinite(r.residual) || !std::isfinite(f.force_scale())) break;
       if (r.residual <= opt.tolerance * std::max(f.force_scale(), 1e-300)) {
         r.converged = true;
         break;
@@ -306,7 +307,8 @@ struct NewtonSolver::Impl {
     if (!r.converged) {
       f.gradient(y, grad);
       r.residual = grad.norm();
-      r.converged = std::isfinite(r.residual) && r.residual <= opt.tolerance * std::max(f.force_scale(), 1e-300);
+      r.converged = std::isfinite(r.residual) && std::isfinite(f.force_scale()) &&
+                    r.residual <= opt.tolerance * std::max(f.force_scale(), 1e-300);
       r.iterations = it;  // the limit, or where no step could be taken
     }
     r.linear_iterations = cg_iterations;
