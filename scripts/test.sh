@@ -3,7 +3,8 @@
 # examples/ against the installed package, then rebuilds the unit tests with AddressSanitizer +
 # UndefinedBehaviorSanitizer (at -O1 -g1, the cheapest build that keeps file:line in reports) and runs them again (the
 # CLI end-to-end tests, the 300-step benchmark-cylinder runs and the any-nu accuracy sweep
-# only in the -Werror pass, to keep .ci/run within its time budget).
+# only in the -Werror pass, to keep .ci/run within its time budget), and fuzzes each mesh reader for 20 s
+# (scripts/fuzz.sh, clang-14 libFuzzer).
 # Usage: scripts/test.sh [--no-sanitizers]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,4 +25,5 @@ if [ "${1:-}" != "--no-sanitizers" ]; then
   cmake --build --preset asan -j "$jobs" --target hooke_tests
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs" -L unit \
     -E "BenchmarkCylinderUnderGravity|AnyNuAgainstFem"
+  bash scripts/fuzz.sh 20   # every mesh reader under libFuzzer for 20 s from the committed corpora (tests/fuzz)
 fi

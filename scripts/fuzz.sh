@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Fuzzes every mesh reader with libFuzzer (clang-14, ASan + UBSan + float-cast-overflow) for SECONDS each, starting
+# from the committed seed corpora in tests/fuzz/corpus/FORMAT (copied: new inputs go to build/fuzz/corpus, the
+# committed ones are not touched). Limits: 10 s per input (a hang), 64 MB per allocation and 1 GB of RSS (a declared
+# count that is not checked against the file's size), inputs up to 64 KB. A finding is written to
+# build/fuzz/findings/FORMAT and fails the script; commit it to tests/fuzz/regressions/FORMAT/, which the unit tests
+# read. Usage: scripts/fuzz.sh [SECONDS=20] [FORMAT...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-20}
+shift || true
+formats=${*:-msh vtu tetgen obj off stl}
+out=build/fuzz
+CXX=clang++-14 cmake -S tests/fuzz -B "$out" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
+cmake --build "$out" -j "$(nproc)" > /dev/null
+status=0
+for f in $formats; do
+  mkdir -p "$out/corpus/$f" "$out/findings/$f"
+  cp -n tests/fuzz/corpus/"$f"/* "$out/corpus/$f/" 2>/dev/null || true
+  log="$out/fuzz_$f.log"
+  if "$out/fuzz_$f" "$out/corpus/$f" -max_total_time="$seconds" -timeout=10 -malloc_limit_mb=64 -rss_limit_mb=1024 \
+       -max_len=65536 -artifact_prefix="$out/findings/$f/" -print_final_stats=1 > "$log" 2>&1; then
+    runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')
+    peak=$(grep -o 'stat::peak_rss_mb: *[0-9]*' "$log" | grep -o '[0-9]*$')
+    echo "fuzz $f: ${runs:-?} inputs in ${seconds} s, no finding, peak RSS ${peak:-?} MB"
+  else
+    echo "fuzz $f: FINDING (see $log and $out/findings/$f)"
+    tail -n 30 "$log"
+    status=1
+  fi
+done
+exit $status
