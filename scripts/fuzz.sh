@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzes every mesh reader with libFuzzer (clang-14, ASan + UBSan + float-cast-overflow) for SECONDS each, starting
+# Fuzzes every mesh reader and the model-file reader with libFuzzer (clang-14, ASan + UBSan + float-cast-overflow) for SECONDS each, starting
 # from the committed seed corpora in tests/fuzz/corpus/FORMAT (copied: new inputs go to build/fuzz/corpus, the
 # committed ones are not touched). Limits: 10 s per input (a hang), 64 MB per allocation and 1 GB of RSS (a declared
 # count that is not checked against the file's size), inputs up to 64 KB. A finding is written to
@@ -9,10 +9,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-20}
 shift || true
-formats=${*:-msh vtu tetgen obj off stl}
+formats=${*:-msh vtu tetgen obj off stl model}
 out=build/fuzz
-CXX=clang++-14 cmake -S tests/fuzz -B "$out" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
-cmake --build "$out" -j "$(nproc)" > /dev/null
+mkdir -p "$out"
+CXX=clang++-14 cmake -S tests/fuzz -B "$out" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo > "$out/configure.log" 2>&1 ||
+  { tail -n 40 "$out/configure.log"; exit 1; }
+cmake --build "$out" -j "$(nproc)" > "$out/build.log" 2>&1 || { tail -n 40 "$out/build.log"; exit 1; }
 status=0
 for f in $formats; do
   mkdir -p "$out/corpus/$f" "$out/findings/$f"

@@ -1,11 +1,13 @@
 // Every input in tests/fuzz/regressions/FORMAT/ (inputs that once crashed, hung or exhausted memory in a reader,
 // issue 16) is read as the fuzz targets read it: through read_mesh with validation. A hooke::Error or a valid mesh
-// is the only acceptable outcome; the issue-16 files (item*) are all malformed and must be rejected. Under the
+// is the only acceptable outcome; the issue-16 files (item*) and the fuzzer's findings so far (fuzz_*) are all
+// malformed and must be rejected. Model files (model/) go through calibrate::read_model. Under the
 // sanitizer build this is where a regression would show as a report.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <hooke/calibrate/model_file.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/io/mesh_io.hpp>
 #include <sstream>
@@ -50,13 +52,18 @@ TEST(FuzzRegressions, EveryCommittedInputIsRejectedOrRead) {
       const std::string name = entry.path().filename().string();
       bool rejected = false;
       try {
-        const mesh::Mesh m = read_mesh(as_mesh_file(entry.path(), format));
-        EXPECT_GT(m.element_count(), 0) << name;
+        if (format == "model") {
+          const calibrate::CalibratedModel m = calibrate::read_model(entry.path());
+          EXPECT_GT(m.mesh.node_count(), 0) << name;
+        } else {
+          const mesh::Mesh m = read_mesh(as_mesh_file(entry.path(), format));
+          EXPECT_GT(m.element_count(), 0) << name;
+        }
       } catch (const Error& e) {
         rejected = true;
         EXPECT_FALSE(std::string(e.what()).empty()) << name;
       }
-      if (name.rfind("item", 0) == 0) {
+      if (name.rfind("item", 0) == 0 || name.rfind("fuzz_", 0) == 0) {
         EXPECT_TRUE(rejected) << format << "/" << name << " was accepted";
       }
     }

@@ -357,6 +357,10 @@ void write_model(const std::filesystem::path& path, const CalibratedModel& m) {
   throw InvalidArgument("model file '" + path.string() + "': use the extension .json, .vtu or .csv");
 }
 
+namespace {
+CalibratedModel model_from_json(const json& j, const std::string& source);
+}  // namespace
+
 CalibratedModel parse_model(const std::string& text, const std::string& source) {
   json j;
   try {
@@ -367,7 +371,19 @@ CalibratedModel parse_model(const std::string& text, const std::string& source) 
     std::string what = e.what();
     if (const auto p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
     throw ParseError(source, line, "not valid JSON (" + what + ")");
+  } catch (const json::exception& e) {  // e.g. a number beyond double's range (found by fuzzing, issue 16)
+    throw ParseError::at_entry(source, "(JSON)", std::string("not valid JSON (") + e.what() + ")");
   }
+  try {
+    return model_from_json(j, source);
+  } catch (const json::exception& e) {  // an access the checks above did not foresee: still the file's fault
+    throw ParseError::at_entry(source, "(model)", std::string("malformed (") + e.what() + ")");
+  }
+}
+
+namespace {
+
+CalibratedModel model_from_json(const json& j, const std::string& source) {
   const Reader r(source);
   if (!j.is_object()) r.fail("(top level)", "a model file is a JSON object");
   if (!j.contains("format") || j["format"] != "hooke-model") r.fail("format", "must be \"hooke-model\"");
@@ -426,6 +442,8 @@ CalibratedModel parse_model(const std::string& text, const std::string& source) 
   }
   return m;
 }
+
+}  // namespace
 
 CalibratedModel read_model(const std::filesystem::path& path) {
   if (path.extension() != ".json")
