@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <hooke/core/atomic_file.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/core/output_transaction.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/experiments/compare.hpp>
 #include <hooke/experiments/figure.hpp>
@@ -44,16 +45,15 @@ void print_comparison(const CompareCli& o, const calibrate::CalibratedModel& mod
               o.in.unit.c_str(), 100.0 * c.mean_error / c.load.height, c.relative_l2);
 }
 
-void write_outputs(const CompareCli& o, const calibrate::CalibratedModel& model, const experiments::Comparison& c) {
+// compare.vtu, compare.json and compare.png into the staging folder `dir` (moved into -o DIR by the caller).
+void write_outputs(const CompareCli& o, const calibrate::CalibratedModel& model, const experiments::Comparison& c,
+                   const std::filesystem::path& dir) {
   const mesh::Mesh& m = model.mesh;
-  const std::filesystem::path dir(o.out_dir);
-  create_output_folder(dir);
   const VecX rest = Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size());
   io::write_vtu(dir / "compare.vtu", m,
                 {{"fem_displacement", m.dim(), c.fem_positions - rest},
                  {"spring_displacement", m.dim(), c.spring_positions - rest},
                  {"node_error", 1, c.node_error}});
-  std::printf("  wrote     %s\n", (dir / "compare.vtu").string().c_str());
   char title[160];
   std::snprintf(title, sizeof title, "%s, %s vs %s FEM\nmax %.3g cm, mean %.3g cm", o.load.c_str(),
                 model.method.c_str(), o.reference.c_str(), 100.0 * c.max_error, 100.0 * c.mean_error);
@@ -61,16 +61,18 @@ void write_outputs(const CompareCli& o, const calibrate::CalibratedModel& model,
       "compare",
       std::filesystem::path(m.source).filename().string() + " (MSM red, FEM black)",
       {experiments::deformation_panel(title, c.fem_mesh, c.fem_mesh_positions, m, c.spring_positions)}};
-  experiments::write_figure_spec(o.out_dir, fig);
-  if (o.no_figure) return;
-  plot_figures({dir / "compare.json"});
-  std::printf("  wrote     %s\n", (dir / "compare.png").string().c_str());
+  experiments::write_figure_spec(dir, fig);
+  if (!o.no_figure) plot_figures({dir / "compare.json"});
 }
 
 int run_compare(const CompareCli& o) {
   if (std::isnan(o.traction) == std::isnan(o.strain))
     throw InvalidArgument("give exactly one of --traction and --strain");
   if (!std::isnan(o.strain) && !(o.strain > 0.0)) throw InvalidArgument("--strain must be > 0");
+  // Outputs as one transaction (issue 16): the folder is checked and staged before the work, and nothing reaches it
+  // unless everything, the figure included, was written.
+  OutputTransaction outputs;
+  const std::filesystem::path staging = o.out_dir.empty() ? std::filesystem::path() : outputs.stage_folder(o.out_dir);
   const calibrate::CalibratedModel model = load_model(o.in);
   experiments::CompareOptions co;
   co.load = experiments::load_kind_from_name(o.load);
@@ -79,7 +81,10 @@ int run_compare(const CompareCli& o) {
   co.strain = std::isnan(o.strain) ? 0.0 : o.strain;
   const experiments::Comparison c = experiments::compare_calibrated(model, co, o.layers);
   print_comparison(o, model, c);
-  if (!o.out_dir.empty()) write_outputs(o, model, c);
+  if (o.out_dir.empty()) return 0;
+  write_outputs(o, model, c, staging);
+  outputs.commit({"compare.vtu"});
+  std::printf("  wrote     %s/compare.vtu%s\n", o.out_dir.c_str(), o.no_figure ? "" : " and compare.png");
   return 0;
 }
 

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstdio>
 #include <hooke/core/error.hpp>
+#include <hooke/core/output_transaction.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/experiments/load_case.hpp>
 #include <hooke/fem/elastic_block.hpp>
@@ -22,6 +23,20 @@ struct FemOptions {
   std::string output, csv, load = "stretch", law = "linear", plane = "stress";
   double traction = std::nan(""), strain = std::nan("");
 };
+
+// The VTU (and the CSV) as one transaction: both or neither (a failing --csv no longer leaves the VTU).
+void write_outputs(const FemOptions& o, const mesh::Mesh& m, const VecX& u, const VecX& external_force) {
+  const io::Field displacement{"displacement", m.dim(), u};
+  VecX magnitude(m.node_count());
+  for (int i = 0; i < m.node_count(); ++i) magnitude(i) = u.segment(m.dim() * i, m.dim()).norm();
+  OutputTransaction outputs;
+  io::write_vtu(outputs.stage_file(o.output), m,
+                {displacement, {"displacement_magnitude", 1, magnitude}, {"external_force", m.dim(), external_force}});
+  if (!o.csv.empty()) io::write_node_csv(outputs.stage_file(o.csv), m, {displacement});
+  outputs.commit();
+  std::printf("  wrote     %s\n", o.output.c_str());
+  if (!o.csv.empty()) std::printf("  wrote     %s\n", o.csv.c_str());
+}
 
 int run_fem(const FemOptions& o) {
   io::ReadOptions ro;
@@ -72,17 +87,7 @@ int run_fem(const FemOptions& o) {
   const double mean_top = experiments::mean_top_displacement(lc, problem, r.positions);
   std::printf("  result    max displacement %.6g m, mean top displacement along the load %.6g m (%.2f %% of height)\n",
               max_u, mean_top, 100.0 * mean_top / lc.height);
-  const io::Field displacement{"displacement", m.dim(), u};
-  VecX magnitude(m.node_count());
-  for (int i = 0; i < m.node_count(); ++i) magnitude(i) = u.segment(m.dim() * i, m.dim()).norm();
-  const io::Field magnitude_field{"displacement_magnitude", 1, magnitude};
-  const io::Field force{"external_force", m.dim(), problem.external_force};
-  io::write_vtu(o.output, m, {displacement, magnitude_field, force});
-  std::printf("  wrote     %s\n", o.output.c_str());
-  if (!o.csv.empty()) {
-    io::write_node_csv(o.csv, m, {displacement});
-    std::printf("  wrote     %s\n", o.csv.c_str());
-  }
+  write_outputs(o, m, u, problem.external_force);
   return 0;
 }
 

@@ -1,6 +1,7 @@
 // hooke reproduce lloyd2007|arnab2008 [-o DIR] [--no-figures]: a paper's experiments with a report.
 #include <cstdio>
 #include <hooke/core/error.hpp>
+#include <hooke/core/output_transaction.hpp>
 #include <hooke/experiments/reproduce_arnab2008.hpp>
 #include <hooke/experiments/reproduce_lloyd2007.hpp>
 #include <memory>
@@ -39,9 +40,15 @@ Action add_reproduce_command(CLI::App& app) {
   cmd->add_flag("--no-figures", o->no_figures, "Write the figure specs (JSON) but do not run matplotlib");
   return [o] {
     if (o->out_dir.empty()) o->out_dir = "out/" + o->paper;
+    if (o->paper != "lloyd2007" && o->paper != "arnab2008")
+      throw InvalidArgument("unknown paper '" + o->paper + "' (available: lloyd2007, arnab2008)");
+    // One transaction (issue 16): report and figures are written into a staging folder and moved into place with the
+    // report (.md) last, so a run killed at any instant leaves the previous report whole, with its figures.
+    OutputTransaction outputs;
+    const std::string staging = outputs.stage_folder(o->out_dir).string();
     if (o->paper == "arnab2008") {
       const auto report = experiments::reproduce_arnab2008();
-      experiments::write_arnab2008_report(o->out_dir, report);
+      experiments::write_arnab2008_report(staging, report);
       for (const auto& row : report.table1)
         std::printf("Table 1: cube %4d nodes, E %6g Pa: scheme D %8.2f Pa (%+.2f %%), paper %g Pa\n", row.nodes,
                     row.youngs_modulus, row.extracted_d, row.deviation_percent, row.paper);
@@ -50,14 +57,13 @@ Action add_reproduce_command(CLI::App& app) {
                     row.model.c_str(), row.surface_steps_per_second, row.volume_steps_per_second, row.dt * 1e3,
                     row.paper_surface_fps, row.paper_volume_fps);
       std::printf("experiments: %.1f s\n", report.seconds);
-      if (!o->no_figures) plot_figures(figure_specs(o->out_dir, report.figures));
+      if (!o->no_figures) plot_figures(figure_specs(staging, report.figures));
+      outputs.commit({"arnab2008.json", "arnab2008.md"});
       std::printf("wrote %s/arnab2008.md, arnab2008.json and %zu figures\n", o->out_dir.c_str(), report.figures.size());
       return 0;
     }
-    if (o->paper != "lloyd2007")
-      throw InvalidArgument("unknown paper '" + o->paper + "' (available: lloyd2007, arnab2008)");
     const auto report = experiments::reproduce_lloyd2007(o->mesh_dir);
-    experiments::write_lloyd2007_report(o->out_dir, report);
+    experiments::write_lloyd2007_report(staging, report);
     for (const auto& c : report.cases)
       std::printf("%-42s %-18s ours %7.3f / %6.3f cm   paper %6.3f / %6.3f cm   fit %6.3f / %6.3f cm   %s\n",
                   c.id.c_str(), c.method.substr(0, 18).c_str(), c.max_error_cm, c.mean_error_cm, c.paper_max_cm,
@@ -66,7 +72,8 @@ Action add_reproduce_command(CLI::App& app) {
                 report.triangle.stretch_stiffness, report.triangle.compress_stiffness, report.square.stretch_stiffness,
                 report.square.compress_stiffness);
     std::printf("experiments: %.1f s\n", report.seconds);
-    if (!o->no_figures) plot_figures(figure_specs(o->out_dir, report.figures));
+    if (!o->no_figures) plot_figures(figure_specs(staging, report.figures));
+    outputs.commit({"lloyd2007.json", "lloyd2007.md"});
     std::printf("wrote %s/lloyd2007.md, lloyd2007.json and %zu figures\n", o->out_dir.c_str(), report.figures.size());
     return 0;
   };

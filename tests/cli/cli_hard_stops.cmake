@@ -41,12 +41,32 @@ if(NOT rc EQUAL 0 OR NOT out MATCHES "3 steps ended above the Newton tolerance")
   message(FATAL_ERROR "--allow-unconverged: expected exit 0 and a warning, got ${rc}: ${out}")
 endif()
 foreach(dir nan huge unconverged)
-  file(GLOB left ${OUT}/${dir}/*)
-  if(left)
-    message(FATAL_ERROR "a failed simulate left ${left}")
+  if(EXISTS ${OUT}/${dir})
+    message(FATAL_ERROR "a failed simulate left its output folder ${OUT}/${dir}")
   endif()
 endforeach()
 # -o naming a file: an IoError (exit 2), not a raw filesystem error (exit 4).
 file(WRITE ${OUT}/a_file "not a folder\n")
 expect("simulate -o FILE" 2 "is a file" simulate ${mesh} ${material} --steps 2 -o ${OUT}/a_file)
 expect("compare -o FILE" 2 "is a file" compare ${mesh} ${material} --strain 0.01 --no-figure -o ${OUT}/a_file)
+
+# Item 9: a command's outputs are whole or absent.
+# fem: a --csv that cannot be written used to leave the VTU behind.
+expect("fem --csv into a file" 2 "is a file" fem ${mesh} ${material} --strain 0.01 -o ${OUT}/both.vtu
+       --csv ${OUT}/a_file/both.csv)
+if(EXISTS ${OUT}/both.vtu)
+  message(FATAL_ERROR "fem wrote the VTU although the CSV failed")
+endif()
+# compare: a figure that cannot be drawn used to leave compare.vtu and compare.json behind.
+execute_process(COMMAND ${CMAKE_COMMAND} -E env HOOKE_PLOT_SCRIPT=${OUT}/no_such_script.py ${HOOKE} compare ${mesh} ${material}
+                        --strain 0.01 -o ${OUT}/cmp RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(rc EQUAL 0 OR EXISTS ${OUT}/cmp)
+  message(FATAL_ERROR "compare with a failing figure: expected a failure and no folder, got ${rc}: ${err}")
+endif()
+# mesh convert to TetGen: an .ele that cannot be written used to leave the .node behind.
+file(MAKE_DIRECTORY ${OUT}/t.ele)
+expect("mesh convert onto a folder" 2 "cannot replace" mesh convert ${mesh} ${OUT}/t.ele)
+file(GLOB tetgen_left ${OUT}/t.node ${OUT}/t.face ${OUT}/t.staging*)
+if(tetgen_left)
+  message(FATAL_ERROR "mesh convert left ${tetgen_left}")
+endif()

@@ -4,6 +4,7 @@
 #include <hooke/calibrate/model_file.hpp>
 #include <hooke/core/atomic_file.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/core/output_transaction.hpp>
 #include <hooke/core/version.hpp>
 #include <hooke/io/vtu.hpp>
 #include <hooke/mesh/validate.hpp>
@@ -342,16 +343,12 @@ void write_model(const std::filesystem::path& path, const CalibratedModel& m) {
     const int d = m.mesh.dim();
     VecX node_mass(m.mesh.node_count());
     for (int i = 0; i < m.mesh.node_count(); ++i) node_mass(i) = m.masses(d * i);
-    const std::filesystem::path elements = path.parent_path() / (path.stem().string() + "_elements.vtu");
-    io::write_vtu(elements, m.mesh, {{"mass", 1, node_mass}});
-    try {
-      io::write_vtu_lines(path, m.mesh.nodes, s.pairs, {{"mass", 1, node_mass}},
-                          {{"stiffness", 1, s.stiffness}, {"rest_length", 1, s.rest_length}});
-    } catch (...) {
-      std::error_code ignored;
-      std::filesystem::remove(elements, ignored);  // both files or neither
-      throw;
-    }
+    OutputTransaction outputs;  // both files or neither, the springs last (issue 16)
+    io::write_vtu(outputs.stage_file(path.parent_path() / (path.stem().string() + "_elements.vtu")), m.mesh,
+                  {{"mass", 1, node_mass}});
+    io::write_vtu_lines(outputs.stage_file(path), m.mesh.nodes, s.pairs, {{"mass", 1, node_mass}},
+                        {{"stiffness", 1, s.stiffness}, {"rest_length", 1, s.rest_length}});
+    outputs.commit();
     return;
   }
   throw InvalidArgument("model file '" + path.string() + "': use the extension .json, .vtu or .csv");

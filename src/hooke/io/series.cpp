@@ -24,6 +24,8 @@ std::string unique_frames_name(const fs::path& dir) {
 }  // namespace
 
 SeriesWriter::SeriesWriter(fs::path dir, mesh::Mesh mesh) : m_dir(std::move(dir)), m_mesh(std::move(mesh)) {
+  std::error_code exists_ec;
+  m_created_dir = !fs::exists(m_dir, exists_ec);
   create_output_folder(m_dir);
   m_name = unique_frames_name(m_dir);
   m_partial = m_dir / (m_name + ".partial");
@@ -36,7 +38,8 @@ SeriesWriter::~SeriesWriter() {
   std::error_code ec;
   if (m_committed) return;
   fs::remove_all(m_partial, ec);
-  fs::remove_all(m_dir / m_name, ec);  // renamed, but the .pvd was not written
+  fs::remove_all(m_dir / m_name, ec);        // renamed, but the .pvd was not written
+  if (m_created_dir) fs::remove(m_dir, ec);  // a folder this run made, when empty: no trace of a failed run
 }
 
 void SeriesWriter::write(double time, const std::vector<Field>& point_data) {

@@ -32,7 +32,8 @@ class SeriesWriter {
 
  private:
   std::filesystem::path m_dir, m_partial;
-  std::string m_name;  // frames-ID
+  std::string m_name;          // frames-ID
+  bool m_created_dir = false;  // the output folder did not exist before
   mesh::Mesh m_mesh;
   std::vector<PvdFrame> m_frames;
   bool m_committed = false;

@@ -2,6 +2,7 @@
 #include <cctype>
 #include <cmath>
 #include <hooke/core/atomic_file.hpp>
+#include <hooke/core/output_transaction.hpp>
 #include <hooke/io/detail/assemble.hpp>
 #include <hooke/io/detail/extension.hpp>
 #include <hooke/io/detail/reader.hpp>
@@ -126,7 +127,13 @@ mesh::Mesh read_tetgen(const std::filesystem::path& path) {
   return m;
 }
 
-void write_tetgen(const std::filesystem::path& path, const mesh::Mesh& m) {
+void write_tetgen(const std::filesystem::path& target, const mesh::Mesh& m) {
+  if (m.kind == mesh::ElementKind::kQuad) throw InvalidArgument("TetGen files hold tets or triangles, not quads");
+  // The .node, .face and .ele files as one transaction (issue 16): all staged under one stem, then renamed with the
+  // .ele (what a reader opens) last; a failure leaves the previous files untouched.
+  OutputTransaction outputs;
+  for (const char* ext : {".node", ".face"}) outputs.stage_file(with_ext(target, ext));
+  const std::filesystem::path path = outputs.stage_file(with_ext(target, ".ele"));
   const int nv = m.node_count();
   write_file_atomically(with_ext(path, ".node"), [&](std::ostream& out) {
     out << std::setprecision(17) << nv << " 3 0 0\n";
@@ -153,9 +160,8 @@ void write_tetgen(const std::filesystem::path& path, const mesh::Mesh& m) {
     write_faces(mesh::boundary_facets(m));
   } else if (m.kind == mesh::ElementKind::kSurfaceTriangle || m.kind == mesh::ElementKind::kTriangle) {
     write_faces(m.elements);
-  } else {
-    throw InvalidArgument("TetGen files hold tets or triangles, not quads");
   }
+  outputs.commit();
 }
 
 }  // namespace hooke::io
