@@ -60,7 +60,7 @@ void define_model(py::module_& m) {
             auto& s = self.cast<CalibratedModel&>().springs;
             return view(s.volume_tets.data(), s.volume_tets.rows(), s.volume_tets.cols(), self, false);
           },
-          "(T, 4) tets carrying a volume term (empty without).")
+          "(T, 4) tets carrying a volume term, or (T, 3) triangles carrying an area term in 2D (empty without).")
       .def_property_readonly(
           "volume_stiffness",
           flat_property<CalibratedModel>([](CalibratedModel& c) -> VecX& { return c.springs.volume_stiffness; }, true),

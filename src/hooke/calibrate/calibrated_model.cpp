@@ -90,12 +90,13 @@ void validate_model(const CalibratedModel& m, const std::string& source) {
     c.positive(where, s.rest_length(static_cast<Eigen::Index>(k)), "rest length l0");
   }
   if (s.volume_tets.rows() > 0) {
-    if (d != 3 || s.volume_tets.cols() != 4) c.fail("volume_terms", "volume terms need tets of a 3D model");
+    if (!(d == 3 && s.volume_tets.cols() == 4) && !(d == 2 && s.volume_tets.cols() == 3))
+      c.fail("volume_terms", "volume terms need tets of a 3D model (or area terms, triangles of a 2D one)");
     if (s.volume_stiffness.size() != s.volume_tets.rows() || s.rest_volume.size() != s.volume_tets.rows())
       c.fail("volume_terms", "need k_V and V0 for each tet");
     for (Eigen::Index t = 0; t < s.volume_tets.rows(); ++t) {
       const std::string where = entry("volume_terms", t);
-      for (int k = 0; k < 4; ++k) c.node(where, s.volume_tets(t, k), n);
+      for (Eigen::Index k = 0; k < s.volume_tets.cols(); ++k) c.node(where, s.volume_tets(t, k), n);
       c.finite(where, s.volume_stiffness(t), "k_V");  // negative below nu = 1/4 (any-nu-tet, docs/methods/any_nu.md)
       c.positive(where, s.rest_volume(t), "V0");
     }
@@ -133,7 +134,7 @@ CalibratedModel permute_nodes(const CalibratedModel& model, const std::vector<in
     if (p[0] > p[1]) std::swap(p[0], p[1]);
   }
   for (Eigen::Index t = 0; t < out.springs.volume_tets.rows(); ++t)
-    for (int k = 0; k < 4; ++k)
+    for (Eigen::Index k = 0; k < out.springs.volume_tets.cols(); ++k)
       out.springs.volume_tets(t, k) = old_to_new[static_cast<size_t>(out.springs.volume_tets(t, k))];
   if (out.surface) {
     SurfaceTerms& s = *out.surface;

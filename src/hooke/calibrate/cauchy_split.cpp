@@ -12,4 +12,10 @@ CauchySplit cauchy_split(const material::Material& material) {
   return unclamped_cauchy_split(material);
 }
 
+CauchySplit cauchy_split_2d(const material::Material& material) {
+  const material::Lame l = material::lame(material, 2);
+  if (l.lambda < l.mu) return {material.youngs_modulus, 0.0};
+  return {8.0 / 3.0 * l.mu, l.lambda - l.mu};
+}
+
 }  // namespace hooke::calibrate

@@ -22,6 +22,15 @@ struct CauchySplit {
 /// where E_s = E and lambda_V = 0 (to round-off).
 [[nodiscard]] CauchySplit cauchy_split(const material::Material& material);
 
+/// The split of a 2D material (plane stress or strain by material.plane; Lamé parameters of
+/// material::lame(material, 2)). A network of central springs in the plane is isotropic on average only with
+/// lambda* = mu (nu = 1/3 in plane stress, the value Lloyd's Eq. 9 is derived for); an area term
+/// k_A (A - A0)^2 / (2 A0^2) linearises to k_A (tr eps)^2 / 2 (delta A = A0 tr eps). So: lambda* >= mu: springs of
+/// Eq. 9 at E_s = 8 mu / 3 (the modulus of the nu = 1/3 plane-stress material with shear modulus mu) and
+/// lambda_A = lambda* - mu (the volume_lambda field); lambda* < mu: E_s = E, lambda_A = 0 (Eq. 9 alone). Continuous
+/// at nu = 1/3 in plane stress; in plane strain the threshold is nu = 1/4, where the springs jump from E to 16 E / 15.
+[[nodiscard]] CauchySplit cauchy_split_2d(const material::Material& material);
+
 /// The unclamped split E_s = 5 mu / 2, lambda_V = lambda - mu for any nu (negative lambda_V below 1/4): for
 /// studies of where negative volume terms lose definiteness (tets_without_definite_share).
 [[nodiscard]] CauchySplit unclamped_cauchy_split(const material::Material& material);

@@ -20,7 +20,7 @@ constexpr Named kNames[] = {
     {Method::kLloydTriangle, "lloyd-triangle"}, {Method::kLloydSquare, "lloyd-square"},
     {Method::kLloydTet, "lloyd-tet"},           {Method::kLloydTetVolume, "lloyd-tet-volume"},
     {Method::kStiffnessFit, "stiffness-fit"},   {Method::kStiffnessFitVolume, "stiffness-fit-volume"},
-    {Method::kAnyNuTet, "any-nu-tet"}};
+    {Method::kAnyNuTet, "any-nu-tet"},          {Method::kAnyNuTriangle, "any-nu-triangle"}};
 
 void require_kind(const mesh::Mesh& m, bool ok, Method method, const char* what) {
   if (!ok)
@@ -145,12 +145,16 @@ SpringModel calibrate(const mesh::Mesh& m, const std::vector<material::Material>
             e, [&](int s, double) { acc.add(s, mat(e).youngs_modulus * mat(e).thickness * std::sqrt(3.0) / 4.0); });
       break;
     case Method::kLloydTriangle:
+    case Method::kAnyNuTriangle:
       require_kind(m, planar_tri, method, "triangles");
       for (int e = 0; e < m.element_count(); ++e) {
         const double area = mesh::element_measure(m, e);
+        // any-nu-triangle: Eq. 9 at E_s = 8 mu / 3, the nu = 1/3 material carrying the shear modulus (cauchy_split_2d)
+        const double es =
+            method == Method::kAnyNuTriangle ? cauchy_split_2d(mat(e)).spring_youngs_modulus : mat(e).youngs_modulus;
         acc.for_each_edge(e, [&](int s, double l) {
           const double a0 = std::sqrt(3.0) / 4.0 * l * l;  // equilateral triangle on this edge
-          acc.add(s, mat(e).youngs_modulus * mat(e).thickness * std::sqrt(3.0) / 4.0 * area / a0);
+          acc.add(s, es * mat(e).thickness * std::sqrt(3.0) / 4.0 * area / a0);
         });
       }
       break;
@@ -200,8 +204,18 @@ SpringModel calibrate(const mesh::Mesh& m, const std::vector<material::Material>
               : std::sqrt(2.0) / 84.0 * lhat * lhat * lhat * mat(e).youngs_modulus * 2.0 / 5.0;
     }
   }
-  if (method == Method::kAnyNuTet && out.volume_stiffness.isZero(0.0)) {  // nu <= 1/4: springs only (lloyd-tet)
-    out.volume_tets.resize(0, 4);
+  if (method == Method::kAnyNuTriangle) {  // area terms k_A = lambda_A t A0: (A - A0)/A0 = tr eps to first order
+    out.volume_tets = m.elements;
+    out.volume_stiffness.resize(m.element_count());
+    out.rest_volume.resize(m.element_count());
+    for (int e = 0; e < m.element_count(); ++e) {
+      out.rest_volume(e) = mesh::element_measure(m, e);
+      out.volume_stiffness(e) = cauchy_split_2d(mat(e)).volume_lambda * mat(e).thickness * out.rest_volume(e);
+    }
+  }
+  if ((method == Method::kAnyNuTet || method == Method::kAnyNuTriangle) && out.volume_stiffness.isZero(0.0)) {
+    // nu <= 1/4 (tets) or lambda* <= mu (triangles): springs only, lloyd-tet or lloyd-triangle
+    out.volume_tets.resize(0, m.elements.cols());
     out.volume_stiffness.resize(0);
     out.rest_volume.resize(0);
   }

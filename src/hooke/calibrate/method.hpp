@@ -18,7 +18,8 @@ enum class Method {
   kLloydTetVolume,      ///< "lloyd-tet-volume": Eq. 14, springs plus volume terms
   kStiffnessFit,        ///< "stiffness-fit": per element, non-negative least squares on ||K_FEM - K_MSM||_F
   kStiffnessFitVolume,  ///< "stiffness-fit-volume": springs fitted at (E_s, nu = 1/4) plus k_V = lambda_V V0 per tet
-  kAnyNuTet             ///< "any-nu-tet": Eq. 12-13 springs at E_s plus k_V = lambda_V V0 per tet (cauchy_split)
+  kAnyNuTet,            ///< "any-nu-tet": Eq. 12-13 springs at E_s plus k_V = lambda_V V0 per tet (cauchy_split)
+  kAnyNuTriangle  ///< "any-nu-triangle": Eq. 9 springs at E_s plus k_A = lambda_A t A0 per triangle (cauchy_split_2d)
 };
 
 Method method_from_name(std::string_view name);  ///< @throws InvalidArgument listing the names

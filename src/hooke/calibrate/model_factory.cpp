@@ -12,7 +12,7 @@ namespace {
 
 constexpr std::string_view kCalibrationMethods[] = {
     "vangelder",        "lloyd-equilateral", "lloyd-triangle",       "lloyd-square", "lloyd-tet",
-    "lloyd-tet-volume", "stiffness-fit",     "stiffness-fit-volume", "any-nu-tet"};
+    "lloyd-tet-volume", "stiffness-fit",     "stiffness-fit-volume", "any-nu-tet",   "any-nu-triangle"};
 
 CalibratedModel surface_model(const mesh::Mesh& mesh, const material::Material& material, const ModelOptions& o) {
   SurfaceOptions so = o.surface;
@@ -66,6 +66,9 @@ std::string method_equation(std::string_view method) {
   if (method == "any-nu-tet")
     return "docs/methods/any_nu.md: Lloyd et al. 2007 Eq. 12-13 springs at E_s = 5 mu / 2 and a volume term "
            "k_V = (lambda - mu) V0 per tet (App. C.2) for nu >= 1/4; below, Eq. 12-13 at E (lloyd-tet)";
+  if (method == "any-nu-triangle")
+    return "docs/methods/any_nu.md: Lloyd et al. 2007 Eq. 9 springs at E_s = 8 mu / 3 and an area term "
+           "k_A = (lambda* - mu) t A0 per triangle for lambda* >= mu (nu >= 1/3 in plane stress); below, Eq. 9 at E";
   if (method == "surface")
     return "Arnab & Raja: anchors (Eq. 2), volume penalty (Eq. 3, 4), membrane springs of Lloyd et al. Eq. 9";
   if (method == "fem") return "finite elements (CST, Q4, tet4) of the material's law";

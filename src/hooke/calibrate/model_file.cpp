@@ -192,19 +192,23 @@ void read_springs(const Reader& r, const json& j, int nodes, SpringModel& s) {
   }
 }
 
-void read_volume_terms(const Reader& r, const json& j, int nodes, SpringModel& s) {
+// Rows [i, j, k, l, k_V, V0] of tets in 3D, [i, j, k, k_A, A0] of triangles (area terms) in 2D.
+void read_volume_terms(const Reader& r, const json& j, int nodes, int dim, SpringModel& s) {
   const json& v = r.array(r.key(j, "", "volume_terms"), "volume_terms");
-  s.volume_tets.resize(static_cast<Eigen::Index>(v.size()), 4);
+  const int corners = dim == 2 ? 3 : 4;
+  s.volume_tets.resize(static_cast<Eigen::Index>(v.size()), corners);
   s.volume_stiffness.resize(static_cast<Eigen::Index>(v.size()));
   s.rest_volume.resize(static_cast<Eigen::Index>(v.size()));
   for (size_t t = 0; t < v.size(); ++t) {
     const std::string where = Reader::at("volume_terms", t);
-    const json& row = r.array(v[t], where, 6);
-    for (int c = 0; c < 4; ++c)
+    const json& row = r.array(v[t], where, static_cast<size_t>(corners) + 2);
+    for (int c = 0; c < corners; ++c)
       s.volume_tets(static_cast<Eigen::Index>(t), c) = r.node(row[static_cast<size_t>(c)], where, nodes);
-    s.volume_stiffness(static_cast<Eigen::Index>(t)) = r.number(row[4], where);
-    const double v0 = r.number(row[5], where);
-    if (!(v0 > 0.0)) r.fail(where, "rest volume V0 = " + num(v0) + " m^3 must be > 0");
+    s.volume_stiffness(static_cast<Eigen::Index>(t)) = r.number(row[static_cast<size_t>(corners)], where);
+    const double v0 = r.number(row[static_cast<size_t>(corners) + 1], where);
+    if (!(v0 > 0.0))
+      r.fail(where, dim == 2 ? "rest area A0 = " + num(v0) + " m^2 must be > 0"
+                             : "rest volume V0 = " + num(v0) + " m^3 must be > 0");
     s.rest_volume(static_cast<Eigen::Index>(t)) = v0;
   }
 }
@@ -300,7 +304,7 @@ std::string model_json(const CalibratedModel& m) {
   });
   rows(out, "volume_terms", s.volume_tets.rows(), [&](Eigen::Index t) {
     std::string row = "[";
-    for (int c = 0; c < 4; ++c) row += std::to_string(s.volume_tets(t, c)) + ", ";
+    for (Eigen::Index c = 0; c < s.volume_tets.cols(); ++c) row += std::to_string(s.volume_tets(t, c)) + ", ";
     return row + num(s.volume_stiffness(t)) + ", " + num(s.rest_volume(t)) + "]";
   });
   if (m.surface)
@@ -422,7 +426,7 @@ CalibratedModel model_from_json(const json& j, const std::string& source) {
     m.masses.segment(d * static_cast<Eigen::Index>(i), d).setConstant(mass);
   }
   read_springs(r, j, n, m.springs);
-  read_volume_terms(r, j, n, m.springs);
+  read_volume_terms(r, j, n, d, m.springs);
   if (j.contains("surface") && !j["surface"].is_null()) m.surface = read_surface(r, j["surface"], n);
   if (j.contains("warnings")) {
     const json& w = r.array(j["warnings"], "warnings");

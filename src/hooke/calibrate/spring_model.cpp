@@ -2,13 +2,16 @@
 #include <hooke/model/orientation_guard.hpp>
 #include <hooke/springs/spring_block.hpp>
 #include <hooke/springs/tet_volume_block.hpp>
+#include <hooke/springs/triangle_area_block.hpp>
 
 namespace hooke::calibrate {
 
 void add_spring_terms(model::Model& model, const SpringModel& s) {
   if (!s.pairs.empty())
     model.add(std::make_unique<springs::SpringBlock>(model.dim(), s.pairs, s.stiffness, s.rest_length));
-  if (s.volume_tets.rows() > 0)
+  if (s.volume_tets.rows() > 0 && s.volume_tets.cols() == 3)  // area terms of planar triangles (any-nu-triangle)
+    model.add(std::make_unique<springs::TriangleAreaBlock>(s.volume_tets, s.volume_stiffness, s.rest_volume));
+  else if (s.volume_tets.rows() > 0)
     model.add(std::make_unique<springs::TetVolumeBlock>(s.volume_tets, s.volume_stiffness, s.rest_volume));
 }
 

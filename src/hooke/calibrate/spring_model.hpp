@@ -13,13 +13,16 @@ struct SpringModel {
   std::vector<std::array<int, 2>> pairs;  ///< springs (i, j), i < j
   VecX stiffness;                         ///< k per spring, N/m
   VecX rest_length;                       ///< l0 per spring, m (prestrained where the method says so)
-  RowMatXi volume_tets;                   ///< #T x 4 tets with volume terms (empty when the method has none)
-  VecX volume_stiffness;                  ///< k_V per tet, J
-  VecX rest_volume;                       ///< V0 per tet, m^3
+  /// #T x 4 tets with volume terms, or #T x 3 planar triangles with area terms (any-nu-triangle); empty when the
+  /// method has none.
+  RowMatXi volume_tets;
+  VecX volume_stiffness;  ///< k_V (or k_A) per element, J
+  VecX rest_volume;       ///< V0 per tet, m^3 (or A0 per triangle, m^2)
 };
 
-/// Adds the blocks of `springs` to `model`: a SpringBlock when there are springs, a TetVolumeBlock when there are
-/// volume terms. The one place where a SpringModel becomes term blocks (make_model and build_model use it).
+/// Adds the blocks of `springs` to `model`: a SpringBlock when there are springs, a TetVolumeBlock (a
+/// TriangleAreaBlock for triangles) when there are volume terms. The one place where a SpringModel becomes term blocks
+/// (make_model and build_model use it).
 void add_spring_terms(model::Model& model, const SpringModel& springs);
 
 /// The model of `springs` on the rest positions of `mesh`: a SpringBlock plus, when present, a TetVolumeBlock,
