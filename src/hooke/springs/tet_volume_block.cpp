@@ -1,17 +1,10 @@
-#include <hooke/core/detail/psd.hpp>
-#include <hooke/core/error.hpp>
+#include <hooke/springs/detail/measure_terms.hpp>
 #include <hooke/springs/tet_volume_block.hpp>
 
 namespace hooke::springs {
 namespace {
 
 using Mat34 = Eigen::Matrix<double, 3, 4>;
-
-Mat34 corners(const Eigen::Ref<const VecX>& x, const RowMatXi& tets, int t) {
-  Mat34 p;
-  for (int a = 0; a < 4; ++a) p.col(a) = x.segment<3>(3 * tets(t, a));
-  return p;
-}
 
 double volume(const Mat34& p) {
   return (p.col(1) - p.col(0)).dot((p.col(2) - p.col(0)).cross(p.col(3) - p.col(0))) / 6.0;
@@ -62,47 +55,36 @@ Mat12 volume_hessian(const Mat34& p) {
 
 }  // namespace
 
-TetVolumeBlock::TetVolumeBlock(RowMatXi tets, VecX stiffness, VecX rest_volume)
-    : m_tets(std::move(tets)), m_stiffness(std::move(stiffness)), m_rest_volume(std::move(rest_volume)) {
-  if (m_tets.cols() != 4 || m_stiffness.size() != m_tets.rows() || m_rest_volume.size() != m_tets.rows())
-    throw InvalidArgument("TetVolumeBlock: one stiffness and one rest volume per tet");
-  for (Eigen::Index t = 0; t < m_tets.rows(); ++t)
-    if (!std::isfinite(m_stiffness(t)) || !(m_rest_volume(t) > 0.0) || !std::isfinite(m_rest_volume(t)))
-      throw InvalidArgument("tet " + std::to_string(t) + " has a non-finite k_V or a non-positive rest volume");
-  m_schedule = ElementSchedule(m_tets);
-}
+namespace {
 
-double TetVolumeBlock::energy(const Eigen::Ref<const VecX>& x) const {
-  return m_schedule.sum([&](int t) {
-    const double c = volume(corners(x, m_tets, t)) - m_rest_volume(t);
-    return 0.5 * m_stiffness(t) * c * c / (m_rest_volume(t) * m_rest_volume(t));
-  });
-}
+// The tet's volume and its derivatives for MeasureTerms.
+struct TetShape {
+  static constexpr int kDim = 3, kCorners = 4;
+  static double measure(const Mat34& p) { return volume(p); }
+  static Mat34 gradient(const Mat34& p) { return tet_volume_gradient(p); }
+  static Mat12 hessian(const Mat34& p) { return volume_hessian(p); }
+};
+
+}  // namespace
+
+struct TetVolumeBlock::Terms : detail::MeasureTerms<TetShape> {
+  using MeasureTerms::MeasureTerms;
+};
+
+TetVolumeBlock::TetVolumeBlock(RowMatXi tets, VecX stiffness, VecX rest_volume)
+    : m_terms(std::make_shared<const Terms>(std::move(tets), std::move(stiffness), std::move(rest_volume), "tet")) {}
+
+RowMatXi TetVolumeBlock::element_nodes() const { return m_terms->elements(); }
+
+double TetVolumeBlock::energy(const Eigen::Ref<const VecX>& x) const { return m_terms->energy(x); }
 
 void TetVolumeBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
-  m_schedule.for_each_chunk([&](std::span<const int> tets, int) {
-    for (int t : tets) {
-      const Mat34 p = corners(x, m_tets, t);
-      const double v0 = m_rest_volume(t);
-      const Mat34 g = m_stiffness(t) * (volume(p) - v0) / (v0 * v0) * tet_volume_gradient(p);
-      for (int a = 0; a < 4; ++a) gradient.segment<3>(3 * m_tets(t, a)) += g.col(a);
-    }
-  });
+  m_terms->add_gradient(x, gradient);
 }
 
 void TetVolumeBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter,
                                         double* values, bool project_psd) const {
-  m_schedule.for_each_chunk([&](std::span<const int> tets, int) {
-    for (int t : tets) {
-      const Mat34 p = corners(x, m_tets, t);
-      const double v0 = m_rest_volume(t), scale = m_stiffness(t) / (v0 * v0);
-      const Mat34 grad = tet_volume_gradient(p);
-      const Eigen::Map<const Eigen::Matrix<double, 12, 1>> g(grad.data());
-      Mat12 h = scale * (g * g.transpose() + (volume(p) - v0) * volume_hessian(p));
-      if (project_psd) hooke::detail::project_to_psd(h);
-      scatter.add<3, 4>(t, h, values);
-    }
-  });
+  m_terms->add_hessian_values(x, scatter, values, project_psd);
 }
 
 }  // namespace hooke::springs

@@ -1,7 +1,7 @@
 #pragma once
 /// Volume-preserving terms of tetrahedra (Lloyd et al. 2007, App. C.2, after Teschner et al. 2004).
-#include <hooke/core/element_schedule.hpp>
 #include <hooke/model/term_block.hpp>
+#include <memory>
 
 namespace hooke::springs {
 
@@ -26,15 +26,13 @@ class TetVolumeBlock final : public model::TermBlock {
   std::string_view name() const override { return "tet-volume"; }
   double energy(const Eigen::Ref<const VecX>& x) const override;
   void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const override;
-  RowMatXi element_nodes() const override { return m_tets; }
+  RowMatXi element_nodes() const override;
   void add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter, double* values,
                           bool project_psd) const override;
 
  private:
-  RowMatXi m_tets;
-  VecX m_stiffness;
-  VecX m_rest_volume;
-  ElementSchedule m_schedule;
+  struct Terms;  // the shared loops of springs/detail/measure_terms.hpp on tets (immutable, so shared by copies)
+  std::shared_ptr<const Terms> m_terms;
 };
 
 }  // namespace hooke::springs

@@ -1,5 +1,4 @@
-#include <hooke/core/detail/psd.hpp>
-#include <hooke/core/error.hpp>
+#include <hooke/springs/detail/measure_terms.hpp>
 #include <hooke/springs/triangle_area_block.hpp>
 
 namespace hooke::springs {
@@ -7,12 +6,6 @@ namespace {
 
 using Mat23 = Eigen::Matrix<double, 2, 3>;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
-
-Mat23 corners(const Eigen::Ref<const VecX>& x, const RowMatXi& triangles, int t) {
-  Mat23 p;
-  for (int a = 0; a < 3; ++a) p.col(a) = x.segment<2>(2 * triangles(t, a));
-  return p;
-}
 
 double cross2(const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); }
 
@@ -43,50 +36,38 @@ Mat6 area_hessian() {
   return h;
 }
 
+// The triangle's signed area and its derivatives for MeasureTerms.
+struct TriangleShape {
+  static constexpr int kDim = 2, kCorners = 3;
+  static double measure(const Mat23& p) { return area(p); }
+  static Mat23 gradient(const Mat23& p) { return area_gradient(p); }
+  static Mat6 hessian(const Mat23&) {
+    static const Mat6 h = area_hessian();
+    return h;
+  }
+};
+
 }  // namespace
 
-TriangleAreaBlock::TriangleAreaBlock(RowMatXi triangles, VecX stiffness, VecX rest_area)
-    : m_triangles(std::move(triangles)), m_stiffness(std::move(stiffness)), m_rest_area(std::move(rest_area)) {
-  if (m_triangles.cols() != 3 || m_stiffness.size() != m_triangles.rows() || m_rest_area.size() != m_triangles.rows())
-    throw InvalidArgument("TriangleAreaBlock: one stiffness and one rest area per triangle");
-  for (Eigen::Index t = 0; t < m_triangles.rows(); ++t)
-    if (!std::isfinite(m_stiffness(t)) || !(m_rest_area(t) > 0.0) || !std::isfinite(m_rest_area(t)))
-      throw InvalidArgument("triangle " + std::to_string(t) + " has a non-finite k_A or a non-positive rest area");
-  m_schedule = ElementSchedule(m_triangles);
-}
+struct TriangleAreaBlock::Terms : detail::MeasureTerms<TriangleShape> {
+  using MeasureTerms::MeasureTerms;
+};
 
-double TriangleAreaBlock::energy(const Eigen::Ref<const VecX>& x) const {
-  return m_schedule.sum([&](int t) {
-    const double c = area(corners(x, m_triangles, t)) - m_rest_area(t);
-    return 0.5 * m_stiffness(t) * c * c / (m_rest_area(t) * m_rest_area(t));
-  });
-}
+TriangleAreaBlock::TriangleAreaBlock(RowMatXi triangles, VecX stiffness, VecX rest_area)
+    : m_terms(std::make_shared<const Terms>(std::move(triangles), std::move(stiffness), std::move(rest_area),
+                                            "triangle")) {}
+
+RowMatXi TriangleAreaBlock::element_nodes() const { return m_terms->elements(); }
+
+double TriangleAreaBlock::energy(const Eigen::Ref<const VecX>& x) const { return m_terms->energy(x); }
 
 void TriangleAreaBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
-  m_schedule.for_each_chunk([&](std::span<const int> triangles, int) {
-    for (int t : triangles) {
-      const Mat23 p = corners(x, m_triangles, t);
-      const double a0 = m_rest_area(t);
-      const Mat23 g = m_stiffness(t) * (area(p) - a0) / (a0 * a0) * area_gradient(p);
-      for (int a = 0; a < 3; ++a) gradient.segment<2>(2 * m_triangles(t, a)) += g.col(a);
-    }
-  });
+  m_terms->add_gradient(x, gradient);
 }
 
 void TriangleAreaBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter,
                                            double* values, bool project_psd) const {
-  static const Mat6 d2a = area_hessian();
-  m_schedule.for_each_chunk([&](std::span<const int> triangles, int) {
-    for (int t : triangles) {
-      const Mat23 p = corners(x, m_triangles, t);
-      const double a0 = m_rest_area(t), scale = m_stiffness(t) / (a0 * a0);
-      const Mat23 grad = area_gradient(p);
-      const Eigen::Map<const Eigen::Matrix<double, 6, 1>> g(grad.data());
-      Mat6 h = scale * (g * g.transpose() + (area(p) - a0) * d2a);
-      if (project_psd) hooke::detail::project_to_psd(h);
-      scatter.add<2, 3>(t, h, values);
-    }
-  });
+  m_terms->add_hessian_values(x, scatter, values, project_psd);
 }
 
 }  // namespace hooke::springs

@@ -1,8 +1,8 @@
 #pragma once
 /// Area-preserving terms of planar triangles: the 2D counterpart of TetVolumeBlock, used by any-nu-triangle to carry
 /// the part of the 2D lambda a spring network cannot (docs/methods/any_nu.md).
-#include <hooke/core/element_schedule.hpp>
 #include <hooke/model/term_block.hpp>
+#include <memory>
 
 namespace hooke::springs {
 
@@ -21,15 +21,13 @@ class TriangleAreaBlock final : public model::TermBlock {
   std::string_view name() const override { return "triangle-area"; }
   double energy(const Eigen::Ref<const VecX>& x) const override;
   void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const override;
-  RowMatXi element_nodes() const override { return m_triangles; }
+  RowMatXi element_nodes() const override;
   void add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter, double* values,
                           bool project_psd) const override;
 
  private:
-  RowMatXi m_triangles;
-  VecX m_stiffness;
-  VecX m_rest_area;
-  ElementSchedule m_schedule;
+  struct Terms;  // the shared loops of springs/detail/measure_terms.hpp on triangles
+  std::shared_ptr<const Terms> m_terms;
 };
 
 }  // namespace hooke::springs

@@ -1,0 +1,81 @@
+#pragma once
+// The loops shared by the measure-preserving terms E = k / (2 m0^2) (m - m0)^2 of one element kind (tet volumes,
+// triangle areas): `Shape` gives the element's measure m, its gradient dm/dx and its second derivative d2m/dx2 from
+// the corner positions (a D x N matrix, one corner per column). Energy, gradient and Hessian per element follow:
+// k (m - m0) / m0^2 dm and k / m0^2 (dm dm^T + (m - m0) d2m).
+#include <cmath>
+#include <hooke/core/detail/psd.hpp>
+#include <hooke/core/element_schedule.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/model/hessian_scatter.hpp>
+#include <string>
+
+namespace hooke::springs::detail {
+
+template <class Shape>
+class MeasureTerms {
+ public:
+  static constexpr int D = Shape::kDim, N = Shape::kCorners;
+  using Corners = Eigen::Matrix<double, D, N>;
+  using Local = Eigen::Matrix<double, D * N, D * N>;
+
+  // @throws InvalidArgument naming the first element with a non-finite k or a non-positive m0
+  MeasureTerms(RowMatXi elements, VecX stiffness, VecX rest, const char* what)
+      : m_elements(std::move(elements)), m_stiffness(std::move(stiffness)), m_rest(std::move(rest)) {
+    if (m_elements.cols() != N || m_stiffness.size() != m_elements.rows() || m_rest.size() != m_elements.rows())
+      throw InvalidArgument(std::string(what) + ": one stiffness and one rest measure per element");
+    for (Eigen::Index e = 0; e < m_elements.rows(); ++e)
+      if (!std::isfinite(m_stiffness(e)) || !(m_rest(e) > 0.0) || !std::isfinite(m_rest(e)))
+        throw InvalidArgument(std::string(what) + " " + std::to_string(e) +
+                              " has a non-finite stiffness or a non-positive rest measure");
+    m_schedule = ElementSchedule(m_elements);
+  }
+
+  const RowMatXi& elements() const { return m_elements; }
+
+  double energy(const Eigen::Ref<const VecX>& x) const {
+    return m_schedule.sum([&](int e) {
+      const double c = Shape::measure(corners(x, e)) - m_rest(e);
+      return 0.5 * m_stiffness(e) * c * c / (m_rest(e) * m_rest(e));
+    });
+  }
+
+  void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
+    m_schedule.for_each_chunk([&](std::span<const int> elements, int) {
+      for (int e : elements) {
+        const Corners p = corners(x, e);
+        const double m0 = m_rest(e);
+        const Corners g = m_stiffness(e) * (Shape::measure(p) - m0) / (m0 * m0) * Shape::gradient(p);
+        for (int a = 0; a < N; ++a) gradient.template segment<D>(D * m_elements(e, a)) += g.col(a);
+      }
+    });
+  }
+
+  void add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter, double* values,
+                          bool project_psd) const {
+    m_schedule.for_each_chunk([&](std::span<const int> elements, int) {
+      for (int e : elements) {
+        const Corners p = corners(x, e);
+        const double m0 = m_rest(e), scale = m_stiffness(e) / (m0 * m0);
+        const Corners grad = Shape::gradient(p);
+        const Eigen::Map<const Eigen::Matrix<double, D * N, 1>> g(grad.data());
+        Local h = scale * (g * g.transpose() + (Shape::measure(p) - m0) * Shape::hessian(p));
+        if (project_psd) hooke::detail::project_to_psd(h);
+        scatter.add<D, N>(e, h, values);
+      }
+    });
+  }
+
+ private:
+  RowMatXi m_elements;
+  VecX m_stiffness, m_rest;
+  ElementSchedule m_schedule;
+
+  Corners corners(const Eigen::Ref<const VecX>& x, int e) const {
+    Corners p;
+    for (int a = 0; a < N; ++a) p.col(a) = x.template segment<D>(D * m_elements(e, a));
+    return p;
+  }
+};
+
+}  // namespace hooke::springs::detail
