@@ -7,10 +7,21 @@ namespace {
 // 267 rows no faster, the barrier costs what the split saves).
 constexpr int kParallelRows = 10000;
 
+// Runs f(0 .. count - 1), on all threads when `rows` reaches kParallelRows. A plain loop below it: an OpenMP region
+// with if(false) still allocates in libgomp, and the time steps must not.
+template <class F>
+void for_each_index(int count, int rows, const F& f) {
+  if (rows >= kParallelRows) {
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < count; ++i) f(i);
+  } else {
+    for (int i = 0; i < count; ++i) f(i);
+  }
+}
+
 }  // namespace
 
-// By symmetry column c holds row c. A plain loop below the threshold: an OpenMP region with if(false) still
-// allocates in libgomp, and the time steps must not.
+// By symmetry column c holds row c.
 void multiply(const SparseMatrix& a, const VecX& z, VecX& out) {
   const int* start = a.outerIndexPtr();
   const int* rows = a.innerIndexPtr();
@@ -23,12 +34,7 @@ void multiply(const SparseMatrix& a, const VecX& z, VecX& out) {
     for (int q = start[c]; q < start[c + 1]; ++q) sum += values[q] * in[rows[q]];
     result[c] = sum;
   };
-  if (n >= kParallelRows) {
-#pragma omp parallel for schedule(static)
-    for (int c = 0; c < n; ++c) row(c);
-  } else {
-    for (int c = 0; c < n; ++c) row(c);
-  }
+  for_each_index(n, n, row);
 }
 
 bool node_blocked(const SparseMatrix& a, int d) {
@@ -72,12 +78,7 @@ void multiply_blocked3(const SparseMatrix& a, const VecX& z, VecX& out) {
     result[3 * i + 1] = sum1;
     result[3 * i + 2] = sum2;
   };
-  if (3 * nodes >= kParallelRows) {
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < nodes; ++i) node(i);
-  } else {
-    for (int i = 0; i < nodes; ++i) node(i);
-  }
+  for_each_index(nodes, 3 * nodes, node);
 }
 
 void add_product(const SparseMatrix& a, const VecX& z, int r, VecX& out) {
