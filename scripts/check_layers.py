@@ -4,7 +4,7 @@ import pathlib
 import re
 import sys
 
-ORDER = ["core", "mesh", "io", "material", "model", "fem", "springs", "surface", "calibrate", "solve", "experiments"]
+ORDER = ["core", "mesh", "io", "material", "model", "fem", "springs", "surface", "calibrate", "solve", "identify", "experiments"]
 # fem, springs and surface are siblings: none may include another.
 SIBLINGS = {"fem", "springs", "surface"}
 

@@ -1,0 +1,106 @@
+#include <hooke/identify/force_basis.hpp>
+#include <hooke/springs/tet_volume_block.hpp>
+
+namespace hooke::identify {
+
+ForceBasis::ForceBasis(const ParameterLayout& layout, const Eigen::Ref<const VecX>& positions)
+    : m_layout(layout), m_dim(layout.dim) {
+  const int d = m_dim, ns = layout.spring_count(), nt = layout.volume_count();
+  m_stretch.resize(ns, d);
+  if (layout.offset_count()) m_direction.resize(ns, d);
+  for (int s = 0; s < ns; ++s) {
+    const auto [i, j] = layout.pairs[s];
+    const VecX edge = positions.segment(d * j, d) - positions.segment(d * i, d);
+    const double l = edge.norm();
+    const VecX u = l > 0.0 ? VecX(edge / l) : VecX::Zero(d);
+    m_stretch.row(s) = (l - layout.rest_length(s)) * u.transpose();
+    if (layout.offset_count()) m_direction.row(s) = u.transpose();
+  }
+  m_volume.resize(nt, 12);
+  for (int t = 0; t < nt; ++t) {
+    Eigen::Matrix<double, 3, 4> p;
+    for (int a = 0; a < 4; ++a) p.col(a) = positions.segment<3>(3 * layout.tets(t, a));
+    const double v0 = layout.rest_volume(t);
+    const double v = (p.col(1) - p.col(0)).dot((p.col(2) - p.col(0)).cross(p.col(3) - p.col(0))) / 6.0;
+    const Eigen::Matrix<double, 3, 4> g = (v - v0) / (v0 * v0) * springs::tet_volume_gradient(p);
+    m_volume.row(t) = Eigen::Map<const Eigen::Matrix<double, 1, 12>>(g.data());
+  }
+}
+
+namespace {
+template <int D>
+void add_spring_forces(const ParameterLayout& layout, const RowMatX& stretch, const RowMatX& direction,
+                       const Eigen::Ref<const VecX>& theta, Eigen::Ref<VecX> forces) {
+  using V = Eigen::Matrix<double, D, 1>;
+  const int ns = layout.spring_count(), offsets = ns + layout.volume_count();
+  for (int s = 0; s < ns; ++s) {
+    const auto [i, j] = layout.pairs[s];
+    V f = theta(s) * stretch.row(s).transpose().template head<D>();
+    if (layout.offset_count()) f += theta(offsets + s) * direction.row(s).transpose().template head<D>();
+    forces.template segment<D>(D * j) += f;
+    forces.template segment<D>(D * i) -= f;
+  }
+}
+}  // namespace
+
+void ForceBasis::apply(const Eigen::Ref<const VecX>& theta, Eigen::Ref<VecX> forces) const {
+  const int ns = m_layout.spring_count(), nt = m_layout.volume_count();
+  forces.setZero();
+  if (m_dim == 2)
+    add_spring_forces<2>(m_layout, m_stretch, m_direction, theta, forces);
+  else
+    add_spring_forces<3>(m_layout, m_stretch, m_direction, theta, forces);
+  for (int t = 0; t < nt; ++t)
+    for (int a = 0; a < 4; ++a)
+      forces.segment<3>(3 * m_layout.tets(t, a)) += theta(ns + t) * m_volume.row(t).segment<3>(3 * a).transpose();
+}
+
+namespace {
+// r restricted to the rows of the mask, per node (zero where masked).
+double masked_dot(const Eigen::Ref<const VecX>& r, const std::vector<char>& mask, int offset, const double* column,
+                  int d) {
+  double sum = 0.0;
+  for (int c = 0; c < d; ++c)
+    if (mask[offset + c]) sum += r(offset + c) * column[c];
+  return sum;
+}
+double masked_norm(const std::vector<char>& mask, int offset, const double* column, int d) {
+  double sum = 0.0;
+  for (int c = 0; c < d; ++c)
+    if (mask[offset + c]) sum += column[c] * column[c];
+  return sum;
+}
+}  // namespace
+
+void ForceBasis::apply_transpose(const Eigen::Ref<const VecX>& r, const std::vector<char>& row_mask,
+                                 Eigen::Ref<VecX> theta_out) const {
+  const int d = m_dim, ns = m_layout.spring_count(), nt = m_layout.volume_count();
+  for (int s = 0; s < ns; ++s) {
+    const auto [i, j] = m_layout.pairs[s];
+    theta_out(s) =
+        masked_dot(r, row_mask, d * j, &m_stretch(s, 0), d) - masked_dot(r, row_mask, d * i, &m_stretch(s, 0), d);
+    if (m_layout.offset_count())
+      theta_out(ns + nt + s) =
+          masked_dot(r, row_mask, d * j, &m_direction(s, 0), d) - masked_dot(r, row_mask, d * i, &m_direction(s, 0), d);
+  }
+  for (int t = 0; t < nt; ++t) {
+    double sum = 0.0;
+    for (int a = 0; a < 4; ++a) sum += masked_dot(r, row_mask, 3 * m_layout.tets(t, a), &m_volume(t, 3 * a), 3);
+    theta_out(ns + t) = sum;
+  }
+}
+
+void ForceBasis::add_squared_column_norms(const std::vector<char>& row_mask, Eigen::Ref<VecX> out) const {
+  const int d = m_dim, ns = m_layout.spring_count(), nt = m_layout.volume_count();
+  for (int s = 0; s < ns; ++s) {
+    const auto [i, j] = m_layout.pairs[s];
+    out(s) += masked_norm(row_mask, d * j, &m_stretch(s, 0), d) + masked_norm(row_mask, d * i, &m_stretch(s, 0), d);
+    if (m_layout.offset_count())
+      out(ns + nt + s) +=
+          masked_norm(row_mask, d * j, &m_direction(s, 0), d) + masked_norm(row_mask, d * i, &m_direction(s, 0), d);
+  }
+  for (int t = 0; t < nt; ++t)
+    for (int a = 0; a < 4; ++a) out(ns + t) += masked_norm(row_mask, 3 * m_layout.tets(t, a), &m_volume(t, 3 * a), 3);
+}
+
+}  // namespace hooke::identify

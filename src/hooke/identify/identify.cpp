@@ -1,0 +1,286 @@
+#include <chrono>
+#include <cmath>
+#include <hooke/core/error.hpp>
+#include <hooke/core/log.hpp>
+#include <hooke/core/name_table.hpp>
+#include <hooke/identify/force_basis.hpp>
+#include <hooke/identify/identify.hpp>
+#include <hooke/identify/positions_objective.hpp>
+#include <limits>
+#include <memory>
+
+namespace hooke::identify {
+namespace {
+
+constexpr NameTable<Objective, 2> kObjectives{"identification objective",
+                                              {{{Objective::kForces, "forces"}, {Objective::kPositions, "positions"}}}};
+
+// The training cases' U(p_ref) stacked (rows: every case's DOFs, those of supports masked out), Eq. 2.
+class StackedForceOperator final : public LinearOperator {
+ public:
+  StackedForceOperator(const ParameterLayout& layout, const std::vector<const ReferenceCase*>& cases)
+      : m_layout(layout), m_dofs(cases.empty() ? 0 : cases.front()->positions.size()) {
+    for (const ReferenceCase* c : cases) {
+      m_bases.emplace_back(layout, c->positions);
+      std::vector<char> mask(c->fixed_dofs.size());
+      for (std::size_t k = 0; k < mask.size(); ++k) mask[k] = c->fixed_dofs[k] ? 0 : 1;
+      m_masks.push_back(std::move(mask));
+    }
+  }
+  Eigen::Index rows() const override { return m_dofs * static_cast<Eigen::Index>(m_bases.size()); }
+  Eigen::Index cols() const override { return m_layout.size(); }
+  void apply(const VecX& x, VecX& y) const override {
+    y.resize(rows());
+    const int n = static_cast<int>(m_bases.size());
+#pragma omp parallel for schedule(dynamic) if (m_dofs * n > 200000)
+    for (int c = 0; c < n; ++c) {
+      auto block = y.segment(c * m_dofs, m_dofs);
+      m_bases[c].apply(x, block);
+      for (Eigen::Index k = 0; k < m_dofs; ++k)
+        if (!m_masks[c][k]) block(k) = 0.0;
+    }
+  }
+  void apply_transpose(const VecX& y, VecX& x) const override {
+    const int n = static_cast<int>(m_bases.size());
+    x.setZero(cols());
+#pragma omp parallel if (m_dofs * n > 200000)
+    {
+      VecX part(cols()), sum = VecX::Zero(cols());
+#pragma omp for schedule(dynamic)
+      for (int c = 0; c < n; ++c) {
+        m_bases[c].apply_transpose(y.segment(c * m_dofs, m_dofs), m_masks[c], part);
+        sum += part;
+      }
+#pragma omp critical
+      x += sum;
+    }
+  }
+  VecX squared_column_norms() const override {
+    VecX out = VecX::Zero(cols());
+    for (std::size_t c = 0; c < m_bases.size(); ++c) m_bases[c].add_squared_column_norms(m_masks[c], out);
+    return out;
+  }
+  // b: the applied forces on the free DOFs, stacked like the rows.
+  VecX right_hand_side(const std::vector<const ReferenceCase*>& cases) const {
+    VecX b = VecX::Zero(rows());
+    for (std::size_t c = 0; c < cases.size(); ++c)
+      for (Eigen::Index k = 0; k < m_dofs; ++k)
+        if (m_masks[c][k]) b(static_cast<Eigen::Index>(c) * m_dofs + k) = cases[c]->external_force(k);
+    return b;
+  }
+
+ private:
+  const ParameterLayout& m_layout;
+  Eigen::Index m_dofs;
+  std::vector<ForceBasis> m_bases;
+  std::vector<std::vector<char>> m_masks;
+};
+
+// [A; W (theta_g - mean theta_g)]: Lloyd's penalty toward the mean stiffness (Sec. 2), per group of unknowns.
+class RegularisedOperator final : public LinearOperator {
+ public:
+  struct Group {
+    Eigen::Index begin, size;
+    double weight;
+  };
+  RegularisedOperator(const LinearOperator& a, std::vector<Group> groups) : m_a(a), m_groups(std::move(groups)) {
+    for (const auto& g : m_groups) m_extra += g.size;
+  }
+  Eigen::Index rows() const override { return m_a.rows() + m_extra; }
+  Eigen::Index cols() const override { return m_a.cols(); }
+  void apply(const VecX& x, VecX& y) const override {
+    VecX head;
+    m_a.apply(x, head);
+    y.resize(rows());
+    y.head(m_a.rows()) = head;
+    Eigen::Index row = m_a.rows();
+    for (const auto& g : m_groups) {
+      const auto part = x.segment(g.begin, g.size);
+      y.segment(row, g.size) = g.weight * (part.array() - part.mean()).matrix();
+      row += g.size;
+    }
+  }
+  void apply_transpose(const VecX& y, VecX& x) const override {
+    m_a.apply_transpose(y.head(m_a.rows()), x);
+    Eigen::Index row = m_a.rows();
+    for (const auto& g : m_groups) {  // (I - 1 1^T / n) is symmetric
+      const auto part = y.segment(row, g.size);
+      x.segment(g.begin, g.size) += g.weight * (part.array() - part.mean()).matrix();
+      row += g.size;
+    }
+  }
+  VecX squared_column_norms() const override {
+    VecX out = m_a.squared_column_norms();
+    for (const auto& g : m_groups)
+      out.segment(g.begin, g.size).array() += g.weight * g.weight * (1.0 - 1.0 / static_cast<double>(g.size));
+    return out;
+  }
+
+ private:
+  const LinearOperator& m_a;
+  std::vector<Group> m_groups;
+  Eigen::Index m_extra = 0;
+};
+
+std::vector<const ReferenceCase*> training_cases(const std::vector<ReferenceCase>& cases, const ReferenceCase& rest,
+                                                 bool with_rest) {
+  std::vector<const ReferenceCase*> out;
+  for (const auto& c : cases)
+    if (!c.held_out) out.push_back(&c);
+  if (out.empty()) throw InvalidArgument("identification needs at least one reference case that is not held out");
+  if (with_rest) out.push_back(&rest);
+  return out;
+}
+
+// Eq. 2 on `layout`: returns theta; fills the least-squares report.
+VecX fit_forces(const ParameterLayout& layout, const std::vector<const ReferenceCase*>& cases,
+                const IdentifyOptions& options, const VecX& lower, const VecX& start,
+                BoundedLeastSquaresReport& report) {
+  const StackedForceOperator stacked(layout, cases);
+  const VecX b = stacked.right_hand_side(cases);
+  std::vector<RegularisedOperator::Group> groups;
+  if (options.regularization > 0.0) {
+    const VecX norms = stacked.squared_column_norms();
+    const auto add = [&](Eigen::Index begin, Eigen::Index size) {
+      if (size < 2) return;
+      const double rms = std::sqrt(norms.segment(begin, size).mean());
+      if (rms > 0.0) groups.push_back({begin, size, options.regularization * rms});
+    };
+    add(0, layout.spring_count());
+    add(layout.spring_count(), layout.volume_count());
+  }
+  const RegularisedOperator a(stacked, groups);
+  VecX bb = VecX::Zero(a.rows());
+  bb.head(b.size()) = b;
+  return solve_bounded_least_squares(a, bb, lower, start, options.least_squares, &report);
+}
+
+// Eq. 2 with every spring kept at or above stiffness_floor x the mean identified k (refitted when one fell below).
+VecX fit_forces_with_floor(const ParameterLayout& layout, const std::vector<const ReferenceCase*>& cases,
+                           const IdentifyOptions& options, BoundedLeastSquaresReport& report) {
+  VecX lower = layout.lower_bounds();
+  VecX theta = fit_forces(layout, cases, options, lower, {}, report);
+  const int ns = layout.spring_count();
+  const double floor = options.stiffness_floor * theta.head(ns).mean();
+  if (ns == 0 || !(floor > 0.0) || theta.head(ns).minCoeff() >= floor) return theta;
+  lower.head(ns).setConstant(floor);
+  return fit_forces(layout, cases, options, lower, theta, report);
+}
+
+// Eq. 1 by spectral projected gradients (Birgin, Martinez & Raydan 2000) in variables relative to the start, with a
+// non-monotone Armijo search over the last 5 values.
+VecX fit_positions(const mesh::Mesh& mesh, const ParameterLayout& layout, const std::vector<ReferenceCase>& cases,
+                   const VecX& start, const IdentifyOptions& options, IdentifyReport& report) {
+  std::vector<ReferenceCase> training;
+  for (const auto& c : cases)
+    if (!c.held_out) training.push_back(c);
+  PositionsObjective objective(mesh, layout, training, options.statics);
+  // scale: theta = s .* z with s the start (or the mean where the start is 0), so that z ~ 1
+  VecX s = start;
+  const double mean = start.head(layout.spring_count()).mean();
+  for (Eigen::Index j = 0; j < s.size(); ++j)
+    if (!(s(j) > 0.0))
+      s(j) = j < layout.spring_count() ? mean : std::max(start.tail(layout.volume_count()).mean(), 1e-30);
+  VecX z_lower = VecX::Zero(s.size());  // the springs' floor, relative to s
+  z_lower.head(layout.spring_count()) = (options.stiffness_floor * mean) * s.head(layout.spring_count()).cwiseInverse();
+  VecX z = start.cwiseQuotient(s).cwiseMax(z_lower), gz;
+  VecX gradient;
+  double g = objective.value(z.cwiseProduct(s), &gradient);
+  if (!std::isfinite(g))
+    throw SolverFailure("identification: the Eq. 2 model has no stable equilibrium on a training case");
+  gz = gradient.cwiseProduct(s);
+  report.position_history.push_back(g);
+  std::vector<double> recent{g};
+  const auto projected_gradient = [&](const VecX& zz, const VecX& gg) {
+    return (zz - (zz - gg).cwiseMax(z_lower)).norm();
+  };
+  const double pg0 = std::max(projected_gradient(z, gz), std::numeric_limits<double>::min());
+  double alpha = 1.0 / std::max(gz.lpNorm<Eigen::Infinity>(), std::numeric_limits<double>::min()) * 0.1;
+  for (report.position_iterations = 0; report.position_iterations < options.position_iterations;
+       ++report.position_iterations) {
+    if (projected_gradient(z, gz) <= options.position_tolerance * pg0) {
+      report.converged = true;
+      break;
+    }
+    const VecX d = (z - alpha * gz).cwiseMax(z_lower) - z;
+    const double reference = *std::max_element(recent.begin(), recent.end());
+    double step = 1.0, g_new = 0.0;
+    VecX z_new, grad_new;
+    bool accepted = false;
+    for (int halving = 0; halving < 20; ++halving, step *= 0.5) {
+      z_new = z + step * d;
+      g_new = objective.value(z_new.cwiseProduct(s), &grad_new);
+      if (std::isfinite(g_new) && g_new <= reference + 1e-4 * step * gz.dot(d)) {
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) break;
+    const VecX gz_new = grad_new.cwiseProduct(s);
+    const VecX dz = z_new - z, dg = gz_new - gz;
+    const double sy = dz.dot(dg);
+    alpha = sy > 0.0 ? std::clamp(dz.squaredNorm() / sy, 1e-10, 1e10) : 1e10;
+    z = z_new;
+    gz = gz_new;
+    g = g_new;
+    report.position_history.push_back(g);
+    recent.push_back(g);
+    if (recent.size() > 5) recent.erase(recent.begin());
+  }
+  report.static_solves = objective.static_solves();
+  return z.cwiseProduct(s);
+}
+
+}  // namespace
+
+Objective objective_from_name(std::string_view name) { return kObjectives.from_name(name); }
+std::string_view objective_name(Objective objective) { return kObjectives.name(objective); }
+
+double force_residual(const ParameterLayout& layout, const VecX& theta, const std::vector<ReferenceCase>& cases) {
+  std::vector<const ReferenceCase*> all;
+  for (const auto& c : cases) all.push_back(&c);
+  const StackedForceOperator a(layout, all);
+  const VecX b = a.right_hand_side(all);
+  VecX r;
+  a.apply(theta, r);
+  const double scale = b.norm();
+  return scale > 0.0 ? (r - b).norm() / scale : (r - b).norm();
+}
+
+Identification identify(const mesh::Mesh& mesh, const std::vector<ReferenceCase>& cases,
+                        const IdentifyOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const VecX rest_positions = Eigen::Map<const VecX>(RowMatX(mesh.nodes).data(), mesh.nodes.size());
+  for (const auto& c : cases) validate_reference(c, rest_positions.size());
+  const ReferenceCase rest{"rest", rest_positions, VecX::Zero(rest_positions.size()),
+                           std::vector<char>(rest_positions.size(), 0), false};
+  const bool rest_lengths = options.parameters == Parameters::kSpringsVolumeRestLength;
+  const auto training = training_cases(cases, rest, rest_lengths);
+
+  Identification out;
+  out.layout = parameter_layout(mesh, options.parameters);
+  out.theta = fit_forces_with_floor(out.layout, training, options, out.report.least_squares);
+  if (rest_lengths) {  // fold the offsets into rest lengths, then refit k and k_V with them
+    const calibrate::SpringModel fitted = spring_model(out.layout, out.theta, &out.report.clamped_rest_lengths);
+    out.layout.parameters = Parameters::kSpringsVolume;
+    out.layout.rest_length = fitted.rest_length;
+    out.theta = fit_forces_with_floor(out.layout, training, options, out.report.least_squares);
+  }
+  out.report.converged = out.report.least_squares.converged;
+  std::vector<ReferenceCase> fitted_cases;
+  for (const ReferenceCase* c : training) fitted_cases.push_back(*c);
+  if (options.objective == Objective::kPositions) {
+    out.report.converged = false;
+    out.theta = fit_positions(mesh, out.layout, cases, out.theta, options, out.report);
+  }
+  out.report.force_residual = force_residual(out.layout, out.theta, fitted_cases);
+  out.springs = spring_model(out.layout, out.theta);
+  if (out.layout.spring_count()) {
+    out.report.min_stiffness = out.springs.stiffness.minCoeff();
+    out.report.max_stiffness = out.springs.stiffness.maxCoeff();
+  }
+  out.report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace hooke::identify

@@ -1,0 +1,80 @@
+#pragma once
+/// Data-driven identification of spring models (Lloyd et al. 2007, Sec. 2): the parameters theta that make a
+/// mass-spring model reproduce reference deformations, by the linear least-squares force objective of Eq. 2 or
+/// the node-distance objective of Eq. 1 (see docs/methods/identification.md).
+#include <hooke/calibrate/spring_model.hpp>
+#include <hooke/identify/bounded_least_squares.hpp>
+#include <hooke/identify/parameter_layout.hpp>
+#include <hooke/identify/reference_case.hpp>
+#include <hooke/mesh/mesh.hpp>
+#include <hooke/solve/static_equilibrium.hpp>
+#include <string_view>
+#include <vector>
+
+namespace hooke::identify {
+
+/// Stable names: "forces", "positions".
+enum class Objective {
+  kForces,    ///< Eq. 2: min |f_ref - U(p_ref) theta| over theta >= 0, one sparse bounded least-squares solve
+  kPositions  ///< Eq. 1: min sum_c |x_c(theta) - p_ref,c|^2 with x_c the model's equilibrium, from the Eq. 2 fit
+};
+Objective objective_from_name(std::string_view name);  ///< @throws InvalidArgument listing the names
+std::string_view objective_name(Objective objective);
+
+struct IdentifyOptions {
+  Parameters parameters = Parameters::kSprings;  ///< what is fitted, default springs
+  Objective objective = Objective::kForces;      ///< default forces (Eq. 2)
+  /// Weight w of the penalty toward the mean stiffness that Lloyd et al. suggest (Sec. 2): w^2 c^2 |theta_g -
+  /// mean(theta_g)|^2 for the springs and for the volume terms, c the RMS column norm of U in the group, so w is
+  /// dimensionless (w = 1 pulls as hard as one typical data row). Default 0 (none).
+  double regularization = 0.0;
+  /// Every spring keeps at least this fraction of the mean identified k (a spring at k = 0 can leave a mechanism,
+  /// which has no equilibrium); 0 allows k = 0. Default 1e-3.
+  double stiffness_floor = 1e-3;
+  BoundedLeastSquaresOptions least_squares;  ///< the Eq. 2 solver (tolerance 1e-9 relative)
+  int position_iterations = 30;              ///< positions: projected-gradient iterations at most, default 30
+  /// positions: stop when the relative projected gradient falls below this, default 1e-6
+  double position_tolerance = 1e-6;
+  /// positions: the static solves (defaults; stability checks off, a warm start from the previous equilibrium)
+  solve::StaticOptions statics;
+};
+
+struct IdentifyReport {
+  double force_residual = 0.0;              ///< |f_ref - U theta| / |f_ref| over the training cases' free DOFs
+  BoundedLeastSquaresReport least_squares;  ///< the Eq. 2 solve (the last one with rest lengths)
+  int clamped_rest_lengths = 0;             ///< springs whose fitted l0 fell outside [L/2, 2L] (rest-length only)
+  int position_iterations = 0;              ///< positions: iterations done
+  int static_solves = 0;                    ///< positions: equilibria computed
+  /// positions: G / G_ref per iteration, G = sum_c |x_c - p_ref,c|^2, G_ref = sum_c |p_ref,c - X|^2 (the first
+  /// entry is the Eq. 2 model's)
+  std::vector<double> position_history;
+  bool converged = false;      ///< the objective's own test was met
+  double min_stiffness = 0.0;  ///< smallest identified spring k, N/m
+  double max_stiffness = 0.0;  ///< largest identified spring k, N/m
+  double seconds = 0.0;        ///< wall time
+};
+
+/// An identified model: the unknowns, their values and the spring model they make.
+struct Identification {
+  ParameterLayout layout;          ///< with the fitted rest lengths when they were identified
+  VecX theta;                      ///< on `layout` (no offsets: they are folded into the rest lengths)
+  calibrate::SpringModel springs;  ///< what theta makes (spring_model)
+  IdentifyReport report;
+};
+
+/// Identifies a spring model on `mesh` from the cases not held out. Forces: Eq. 2 as a bounded least-squares
+/// problem with the rows of every training case's free DOFs (refitted with k >= stiffness_floor x mean k when a
+/// spring fell below that); with rest lengths, the fitted l0 are then fixed and k,
+/// k_V fitted again, so that the model is exactly the one measured. Positions: Eq. 1 from there by projected
+/// gradients with the Barzilai-Borwein step, the gradient by the adjoint of each equilibrium (PositionsObjective).
+/// @param mesh   validated tet or triangle mesh, m
+/// @param cases  reference cases on mesh's nodes (validate_reference), at least one not held out; the rest state
+///               (no load, no support) is added as a case with rest lengths
+/// @throws InvalidArgument for bad cases; SolverFailure when an Eq. 1 start has no equilibrium
+Identification identify(const mesh::Mesh& mesh, const std::vector<ReferenceCase>& cases,
+                        const IdentifyOptions& options = {});
+
+/// |f_ref - dE/dx(p_ref)| / |f_ref| over the free DOFs of `cases` for the spring model of theta on `layout`.
+double force_residual(const ParameterLayout& layout, const VecX& theta, const std::vector<ReferenceCase>& cases);
+
+}  // namespace hooke::identify

@@ -1,0 +1,226 @@
+// Identification checked against independent derivations: U(x) theta against the spring and volume blocks'
+// gradients, the adjoint gradient of Eq. 1 against finite differences, and recovery of springs that made the data.
+#include <gtest/gtest.h>
+#include <hooke/calibrate/spring_model.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/identify/force_basis.hpp>
+#include <hooke/identify/identify.hpp>
+#include <hooke/identify/positions_objective.hpp>
+#include <hooke/mesh/generators.hpp>
+#include <hooke/model/problem.hpp>
+#include <random>
+
+#include "support/finite_difference.hpp"
+#include "support/meshes.hpp"
+
+using namespace hooke;
+using identify::Parameters;
+
+namespace {
+
+VecX random_parameters(const identify::ParameterLayout& layout, unsigned seed, double k, double k_volume) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.5, 1.5), o(-0.05, 0.05);
+  VecX theta(layout.size());
+  for (int s = 0; s < layout.spring_count(); ++s) theta(s) = k * u(rng);
+  for (int t = 0; t < layout.volume_count(); ++t) theta(layout.spring_count() + t) = k_volume * u(rng);
+  for (int s = 0; s < layout.offset_count(); ++s)
+    theta(layout.spring_count() + layout.volume_count() + s) = o(rng) * theta(s) * layout.rest_length(s);
+  return theta;
+}
+
+VecX perturbed(const mesh::Mesh& mesh, double amount, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-amount, amount);
+  VecX x = test::flat_positions(mesh);
+  for (Eigen::Index i = 0; i < x.size(); ++i) x(i) += u(rng);
+  return x;
+}
+
+// Reference cases made by a known spring model: bottom (z = 0) clamped, random forces on the other nodes.
+std::vector<identify::ReferenceCase> cases_of(const mesh::Mesh& mesh, const calibrate::SpringModel& springs, int count,
+                                              double force, unsigned seed) {
+  const auto model = calibrate::make_model(mesh, springs);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> n(0.0, force);
+  std::vector<identify::ReferenceCase> out;
+  for (int c = 0; c < count; ++c) {
+    identify::ReferenceCase ref{"case " + std::to_string(c), test::flat_positions(mesh), VecX::Zero(model->dof_count()),
+                                std::vector<char>(model->dof_count(), 0), false};
+    const int axis = c % 3;
+    const double low = mesh.nodes.col(axis).minCoeff();
+    for (int i = 0; i < mesh.node_count(); ++i)
+      for (int d = 0; d < 3; ++d) {
+        if (mesh.nodes(i, axis) < low + 1e-9)
+          ref.fixed_dofs[3 * i + d] = 1;
+        else
+          ref.external_force(3 * i + d) = n(rng);
+      }
+    const solve::StaticResult r = identify::reference_equilibrium(model, ref, {}, ref.positions);
+    EXPECT_EQ(r.report.status, solve::SolveStatus::kConverged);
+    ref.positions = r.positions;
+    out.push_back(ref);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(ForceBasis, EqualsTheBlocksGradientForEveryParameterKind) {
+  const mesh::Mesh mesh = test::irregular_mesh(mesh::ElementKind::kTet, 2, 0.2);
+  for (Parameters p : {Parameters::kSprings, Parameters::kSpringsVolume, Parameters::kSpringsVolumeRestLength}) {
+    const identify::ParameterLayout layout = identify::parameter_layout(mesh, p);
+    const VecX theta = random_parameters(layout, 3, 40.0, 2e-3);
+    const VecX x = perturbed(mesh, 2e-4, 5);
+    VecX forces(x.size());
+    identify::ForceBasis(layout, x).apply(theta, forces);
+    // the offsets fold into rest lengths l0 = L - delta / k (within [L/2, 2L] here)
+    int clamped = -1;
+    const auto model = calibrate::make_model(mesh, identify::spring_model(layout, theta, &clamped));
+    EXPECT_EQ(clamped, 0);
+    const VecX expected = model->gradient(x);
+    EXPECT_LT((forces - expected).norm(), 1e-12 * expected.norm()) << identify::parameters_name(p);
+  }
+}
+
+TEST(ForceBasis, TransposeIsTheAdjointOfApplyOnTheMaskedRows) {
+  const mesh::Mesh mesh = test::irregular_mesh(mesh::ElementKind::kTet, 2, 0.2);
+  const identify::ParameterLayout layout = identify::parameter_layout(mesh, Parameters::kSpringsVolumeRestLength);
+  const VecX x = perturbed(mesh, 2e-4, 8), theta = random_parameters(layout, 4, 40.0, 2e-3);
+  const VecX r = perturbed(mesh, 1.0, 9);
+  std::vector<char> mask(x.size(), 1);
+  for (std::size_t k = 0; k < mask.size(); k += 4) mask[k] = 0;
+  VecX masked = r;
+  for (std::size_t k = 0; k < mask.size(); ++k)
+    if (!mask[k]) masked(static_cast<Eigen::Index>(k)) = 0.0;
+  const identify::ForceBasis u(layout, x);
+  VecX ut(layout.size()), ux(x.size());
+  u.apply_transpose(r, mask, ut);
+  u.apply(theta, ux);
+  EXPECT_NEAR(ut.dot(theta), ux.dot(masked), 1e-12 * std::abs(ux.dot(masked)));
+  VecX norms = VecX::Zero(layout.size());
+  u.add_squared_column_norms(mask, norms);
+  VecX e = VecX::Zero(layout.size()), col(x.size());
+  for (int j : {0, layout.spring_count() + 1, layout.size() - 1}) {
+    e.setZero();
+    e(j) = 1.0;
+    u.apply(e, col);
+    for (std::size_t k = 0; k < mask.size(); ++k)
+      if (!mask[k]) col(static_cast<Eigen::Index>(k)) = 0.0;
+    EXPECT_NEAR(norms(j), col.squaredNorm(), 1e-12 * col.squaredNorm()) << j;
+  }
+}
+
+TEST(ForceBasis, TrianglesTakeSpringsOnlyAndTetsTakeVolumeTerms) {
+  const mesh::Mesh tri = mesh::rectangle_triangles(0.02, 0.02, 3, 3);
+  EXPECT_EQ(identify::parameter_layout(tri, Parameters::kSprings).dim, 2);
+  EXPECT_THROW(identify::parameter_layout(tri, Parameters::kSpringsVolume), InvalidArgument);
+  const mesh::Mesh box = mesh::tet_box(0.01, 0.01, 0.01, 1, 1, 1);
+  const auto layout = identify::parameter_layout(box, Parameters::kSpringsVolume);
+  EXPECT_EQ(layout.spring_count(), 19);
+  EXPECT_EQ(layout.volume_count(), 6);
+}
+
+// Eq. 1's adjoint gradient against central differences of the objective itself (each a converged equilibrium).
+TEST(PositionsObjective, AdjointGradientMatchesFiniteDifferences) {
+  const mesh::Mesh mesh = mesh::tet_box(0.02, 0.02, 0.02, 2, 2, 2);
+  const identify::ParameterLayout layout = identify::parameter_layout(mesh, Parameters::kSpringsVolume);
+  const VecX truth = random_parameters(layout, 11, 40.0, 2e-3);
+  auto cases = cases_of(mesh, identify::spring_model(layout, truth), 2, 0.02, 12);
+  solve::StaticOptions statics;
+  statics.newton.tolerance = 1e-13;
+  identify::PositionsObjective objective(mesh, layout, cases, statics);
+  const VecX theta = random_parameters(layout, 13, 40.0, 2e-3);  // not the truth: G > 0
+  VecX gradient;
+  const double g = objective.value(theta, &gradient);
+  ASSERT_GT(g, 1e-6);
+  std::mt19937 rng(1);
+  for (int trial = 0; trial < 8; ++trial) {
+    const int j = static_cast<int>(rng() % static_cast<unsigned>(layout.size()));
+    const double h = 1e-4 * theta(j);
+    VecX tp = theta, tm = theta;
+    tp(j) += h;
+    tm(j) -= h;
+    const double fd = (objective.value(tp) - objective.value(tm)) / (2.0 * h);
+    EXPECT_NEAR(gradient(j), fd, 1e-5 * gradient.cwiseAbs().maxCoeff()) << "parameter " << j;
+  }
+}
+
+// Data made by a spring model with random k and k_V: Eq. 2 finds them again (the model is in its own class).
+TEST(Identify, ForcesObjectiveRecoversTheSpringsThatMadeTheData) {
+  const mesh::Mesh mesh = test::irregular_mesh(mesh::ElementKind::kTet, 2, 0.2);
+  const identify::ParameterLayout layout = identify::parameter_layout(mesh, Parameters::kSpringsVolume);
+  const VecX truth = random_parameters(layout, 21, 40.0, 2e-3);
+  identify::IdentifyOptions options;
+  options.parameters = Parameters::kSpringsVolume;
+  const identify::Identification id =
+      identify::identify(mesh, cases_of(mesh, identify::spring_model(layout, truth), 6, 0.01, 22), options);
+  EXPECT_TRUE(id.report.converged);
+  EXPECT_LT(id.report.force_residual, 1e-8);
+  EXPECT_LT((id.theta - truth).cwiseQuotient(truth).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_NEAR(id.report.min_stiffness, truth.head(layout.spring_count()).minCoeff(), 1e-6 * 40.0);
+}
+
+// A self-stressed model, like Lloyd's prestrained square (Eq. 11): tensions t in the null space of the spring
+// network's equilibrium matrix, rest lengths l0 = L - t/k. The rest mesh is still an equilibrium, and Eq. 2 with
+// rest lengths finds k, k_V and l0 again.
+TEST(Identify, RestLengthsOfASelfStressedModelAreRecovered) {
+  const mesh::Mesh mesh = test::irregular_mesh(mesh::ElementKind::kTet, 2, 0.2);
+  const identify::ParameterLayout layout = identify::parameter_layout(mesh, Parameters::kSpringsVolumeRestLength);
+  VecX truth = random_parameters(layout, 31, 40.0, 2e-3);
+  const int ns = layout.spring_count(), offsets = ns + layout.volume_count();
+  MatX equilibrium(3 * mesh.node_count(), ns);  // column s: the unit tension of spring s at the nodes
+  const identify::ForceBasis basis(layout, test::flat_positions(mesh));
+  VecX e = VecX::Zero(layout.size()), column(equilibrium.rows());
+  for (int s = 0; s < ns; ++s) {
+    e.setZero();
+    e(offsets + s) = 1.0;
+    basis.apply(e, column);
+    equilibrium.col(s) = column;
+  }
+  const MatX self_stress = Eigen::FullPivLU<MatX>(equilibrium).kernel();
+  ASSERT_GT(self_stress.cols(), 5);
+  VecX t = self_stress * VecX::LinSpaced(self_stress.cols(), -1.0, 1.0);
+  const VecX limit = truth.head(ns).cwiseProduct(layout.rest_length);
+  t *= 0.05 / t.cwiseQuotient(limit).cwiseAbs().maxCoeff();  // |t| <= 5 % of k L: l0 within 5 % of L
+  ASSERT_LT((equilibrium * t).norm(), 1e-12 * limit.norm());
+  truth.tail(ns) = t;
+  const calibrate::SpringModel made = identify::spring_model(layout, truth);
+  identify::IdentifyOptions options;
+  options.parameters = Parameters::kSpringsVolumeRestLength;
+  const identify::Identification id = identify::identify(mesh, cases_of(mesh, made, 6, 0.01, 32), options);
+  EXPECT_LT(id.report.force_residual, 1e-7);
+  EXPECT_EQ(id.report.clamped_rest_lengths, 0);
+  EXPECT_GT((made.rest_length - layout.rest_length).cwiseQuotient(layout.rest_length).cwiseAbs().maxCoeff(), 0.01);
+  EXPECT_LT((id.springs.rest_length - made.rest_length).cwiseQuotient(made.rest_length).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_LT((id.springs.stiffness - made.stiffness).cwiseQuotient(made.stiffness).cwiseAbs().maxCoeff(), 1e-5);
+  EXPECT_LT(
+      (id.springs.volume_stiffness - made.volume_stiffness).cwiseQuotient(made.volume_stiffness).cwiseAbs().maxCoeff(),
+      1e-5);
+}
+
+TEST(Identify, PositionsObjectiveDoesNotLoseWhatTheForcesFitFound) {
+  const mesh::Mesh mesh = mesh::tet_box(0.02, 0.02, 0.02, 2, 2, 2);
+  const identify::ParameterLayout layout = identify::parameter_layout(mesh, Parameters::kSprings);
+  const VecX truth = random_parameters(layout, 41, 40.0, 0.0);
+  // data from a model with volume terms: springs alone cannot fit it exactly
+  const identify::ParameterLayout full = identify::parameter_layout(mesh, Parameters::kSpringsVolume);
+  VecX made = random_parameters(full, 42, 40.0, 2e-3);
+  made.head(layout.spring_count()) = truth;
+  const auto cases = cases_of(mesh, identify::spring_model(full, made), 6, 0.005, 43);
+  identify::IdentifyOptions options;
+  options.objective = identify::Objective::kPositions;
+  options.position_iterations = 15;
+  const identify::Identification id = identify::identify(mesh, cases, options);
+  ASSERT_GE(id.report.position_history.size(), 2u);
+  EXPECT_LT(id.report.position_history.back(), 0.7 * id.report.position_history.front());
+  EXPECT_GT(id.report.static_solves, 0);
+}
+
+TEST(Identify, RejectsCasesOfTheWrongSizeOrAllHeldOut) {
+  const mesh::Mesh mesh = mesh::tet_box(0.01, 0.01, 0.01, 1, 1, 1);
+  identify::ReferenceCase bad{"short", VecX::Zero(3), VecX::Zero(3), std::vector<char>(3, 0), false};
+  EXPECT_THROW(identify::identify(mesh, {bad}), InvalidArgument);
+  identify::ReferenceCase held{"held", test::flat_positions(mesh), VecX::Zero(24), std::vector<char>(24, 0), true};
+  EXPECT_THROW(identify::identify(mesh, {held}), InvalidArgument);
+}
