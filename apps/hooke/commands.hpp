@@ -63,6 +63,8 @@ Action add_simulate_command(CLI::App& app);
 Action add_bench_command(CLI::App& app);
 /// `hooke calibrate`: writes a calibrated model (.json, .vtu, .csv), optionally certified against FEM.
 Action add_calibrate_command(CLI::App& app);
+/// `hooke identify`: a spring model identified from reference deformations (Lloyd Eq. 1-2).
+Action add_identify_command(CLI::App& app);
 /// `hooke mesh info|convert`: inspect and convert meshes.
 Action add_mesh_command(CLI::App& app);
 

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   const hooke::cli::Action simulate = hooke::cli::add_simulate_command(app);
   const hooke::cli::Action bench = hooke::cli::add_bench_command(app);
   const hooke::cli::Action calibrate = hooke::cli::add_calibrate_command(app);
+  const hooke::cli::Action identify = hooke::cli::add_identify_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("simulate")) return simulate();
     if (app.got_subcommand("bench")) return bench();
     if (app.got_subcommand("calibrate")) return calibrate();
+    if (app.got_subcommand("identify")) return identify();
   } catch (const hooke::SolverFailure& e) {
     std::fprintf(stderr, "hooke: solver failure: %s\n", e.what());
     return 3;

@@ -175,20 +175,37 @@ VecX fit_positions(const mesh::Mesh& mesh, const ParameterLayout& layout, const 
   for (const auto& c : cases)
     if (!c.held_out) training.push_back(c);
   PositionsObjective objective(mesh, layout, training, options.statics);
-  // scale: theta = s .* z with s the start (or the mean where the start is 0), so that z ~ 1
-  VecX s = start;
-  const double mean = start.head(layout.spring_count()).mean();
+  // the start: the Eq. 2 fit or start_model, whichever has the smaller G; springs kept at or above the floor
+  const int ns = layout.spring_count();
+  const double floor = options.stiffness_floor * start.head(ns).mean();
+  const auto within_bounds = [&](VecX theta) {
+    theta = theta.cwiseMax(0.0);
+    theta.head(ns) = theta.head(ns).cwiseMax(floor);
+    return theta;
+  };
+  VecX theta = within_bounds(start), gradient;
+  double g = objective.value(theta, &gradient);
+  report.eq2_positions_objective = g;
+  if (options.start_model) {
+    const VecX theta_model = within_bounds(parameters_of(layout, *options.start_model));
+    VecX gradient_model;
+    const double g_model = objective.value(theta_model, &gradient_model);
+    report.start_model_objective = g_model;
+    if (g_model < g || !std::isfinite(g)) {
+      theta = theta_model;
+      g = g_model;
+      gradient = gradient_model;
+      report.started_from_model = true;
+    }
+  }
+  if (!std::isfinite(g)) throw SolverFailure("identification: the start has no stable equilibrium on a training case");
+  // scaled variables theta = s .* z, s the start (the group's mean where it is 0), so that z ~ 1
+  VecX s = theta;
   for (Eigen::Index j = 0; j < s.size(); ++j)
-    if (!(s(j) > 0.0))
-      s(j) = j < layout.spring_count() ? mean : std::max(start.tail(layout.volume_count()).mean(), 1e-30);
-  VecX z_lower = VecX::Zero(s.size());  // the springs' floor, relative to s
-  z_lower.head(layout.spring_count()) = (options.stiffness_floor * mean) * s.head(layout.spring_count()).cwiseInverse();
-  VecX z = start.cwiseQuotient(s).cwiseMax(z_lower), gz;
-  VecX gradient;
-  double g = objective.value(z.cwiseProduct(s), &gradient);
-  if (!std::isfinite(g))
-    throw SolverFailure("identification: the Eq. 2 model has no stable equilibrium on a training case");
-  gz = gradient.cwiseProduct(s);
+    if (!(s(j) > 0.0)) s(j) = j < ns ? theta.head(ns).mean() : std::max(theta.tail(s.size() - ns).mean(), 1e-30);
+  VecX z_lower = VecX::Zero(s.size());
+  z_lower.head(ns) = floor * s.head(ns).cwiseInverse();
+  VecX z = theta.cwiseQuotient(s), gz = gradient.cwiseProduct(s);
   report.position_history.push_back(g);
   std::vector<double> recent{g};
   const auto projected_gradient = [&](const VecX& zz, const VecX& gg) {

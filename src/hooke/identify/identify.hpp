@@ -8,6 +8,7 @@
 #include <hooke/identify/reference_case.hpp>
 #include <hooke/mesh/mesh.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -35,6 +36,9 @@ struct IdentifyOptions {
   int position_iterations = 30;              ///< positions: projected-gradient iterations at most, default 30
   /// positions: stop when the relative projected gradient falls below this, default 1e-6
   double position_tolerance = 1e-6;
+  /// positions: a second start, e.g. an analytic model: Eq. 1 starts from whichever of it (its k and k_V on the
+  /// layout, kept within the bounds) and the Eq. 2 fit has the smaller G. None by default.
+  std::optional<calibrate::SpringModel> start_model;
   /// positions: the static solves (defaults; stability checks off, a warm start from the previous equilibrium)
   solve::StaticOptions statics;
 };
@@ -46,7 +50,10 @@ struct IdentifyReport {
   int position_iterations = 0;              ///< positions: iterations done
   int static_solves = 0;                    ///< positions: equilibria computed
   /// positions: G / G_ref per iteration, G = sum_c |x_c - p_ref,c|^2, G_ref = sum_c |p_ref,c - X|^2 (the first
-  /// entry is the Eq. 2 model's)
+  /// entry is the start's)
+  double eq2_positions_objective = 0.0;  ///< positions: G / G_ref of the Eq. 2 fit
+  double start_model_objective = 0.0;    ///< positions: G / G_ref of start_model (0 without one)
+  bool started_from_model = false;       ///< positions: Eq. 1 started from start_model
   std::vector<double> position_history;
   bool converged = false;      ///< the objective's own test was met
   double min_stiffness = 0.0;  ///< smallest identified spring k, N/m

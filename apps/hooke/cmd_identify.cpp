@@ -1,0 +1,161 @@
+// hooke identify MESH --young PA --poisson NU [--params P] [--objective forces|positions] [--reference fem|FILE...]
+// -o MODEL: a spring model identified from reference deformations (Lloyd et al. 2007, Eq. 1-2), its error on
+// training and held-out cases beside an analytic model's, and the model file.
+#include <cstdio>
+#include <hooke/calibrate/model_file.hpp>
+#include <hooke/core/atomic_file.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/core/output_transaction.hpp>
+#include <hooke/core/units.hpp>
+#include <hooke/experiments/identification.hpp>
+#include <hooke/io/mesh_io.hpp>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+
+namespace hooke::cli {
+namespace {
+
+struct IdentifyCli {
+  ModelInput in;
+  std::string law = "linear", params = "auto", objective = "forces", compare = "auto", output, report, write_reference;
+  std::vector<std::string> reference{"fem"}, held_out_reference;
+  experiments::ReferenceLoads loads;
+  double regularization = 0.0, stiffness_floor = 1e-3, density = 1000.0;
+  int iterations = 30;
+};
+
+identify::IdentifyOptions identify_options(const IdentifyCli& o, const mesh::Mesh& mesh) {
+  identify::IdentifyOptions options;
+  options.parameters = o.params == "auto" ? (mesh.kind == mesh::ElementKind::kTet ? identify::Parameters::kSpringsVolume
+                                                                                  : identify::Parameters::kSprings)
+                                          : identify::parameters_from_name(o.params);
+  options.objective = identify::objective_from_name(o.objective);
+  options.regularization = o.regularization;
+  options.stiffness_floor = o.stiffness_floor;
+  options.position_iterations = o.iterations;
+  if (o.regularization < 0.0 || o.stiffness_floor < 0.0 || o.stiffness_floor >= 1.0)
+    throw InvalidArgument("--regularize must be >= 0 and --stiffness-floor in [0, 1)");
+  return options;
+}
+
+std::vector<identify::ReferenceCase> reference_cases(const IdentifyCli& o, const mesh::Mesh& mesh,
+                                                     const material::Material& material) {
+  if (o.reference.size() == 1 && o.reference.front() == "fem") {
+    if (!o.held_out_reference.empty()) throw InvalidArgument("--held-out-reference needs --reference FILE...");
+    return experiments::fem_reference_cases(mesh, material, o.loads);
+  }
+  std::vector<identify::ReferenceCase> cases;
+  for (const auto& f : o.reference) cases.push_back(experiments::read_reference(f, mesh));
+  for (const auto& f : o.held_out_reference) {
+    cases.push_back(experiments::read_reference(f, mesh));
+    cases.back().held_out = true;
+  }
+  return cases;
+}
+
+void print_study(const experiments::IdentificationStudy& s, const identify::IdentifyOptions& options) {
+  const identify::IdentifyReport& r = s.identification.report;
+  std::printf("  fitted    %s, objective %s: %d springs (k %.4g .. %.4g N/m), %d volume terms, %.3f s\n",
+              std::string(identify::parameters_name(options.parameters)).c_str(),
+              std::string(identify::objective_name(options.objective)).c_str(), s.identification.layout.spring_count(),
+              r.min_stiffness, r.max_stiffness, s.identification.layout.volume_count(), r.seconds);
+  std::printf(
+      "  Eq. 2     force residual %.4g (analytic %.4g), %d iterations, %ld CG iterations, %d at the floor, %s\n",
+      r.force_residual, s.analytic_force_residual, r.least_squares.iterations, r.least_squares.cg_iterations,
+      r.least_squares.at_bound, r.least_squares.converged ? "converged" : "NOT converged");
+  if (options.objective == identify::Objective::kPositions)
+    std::printf(
+        "  Eq. 1     G/G_ref %.4g (Eq. 2 fit) / %.4g (%s): from the %s, %.4g in %d iterations (%d equilibria)\n",
+        r.eq2_positions_objective, r.start_model_objective, s.analytic_method.c_str(),
+        r.started_from_model ? s.analytic_method.c_str() : "Eq. 2 fit", r.position_history.back(),
+        r.position_iterations, r.static_solves);
+  if (r.clamped_rest_lengths) std::printf("  warning   %d rest lengths kept in [L/2, 2L]\n", r.clamped_rest_lengths);
+  std::printf("  %-34s %-9s %12s %12s\n", "case (relative L2 of positions)", "", "identified",
+              s.analytic_method.c_str());
+  for (std::size_t c = 0; c < s.case_names.size(); ++c)
+    std::printf("  %-34s %-9s %12.4g %12.4g\n", s.case_names[c].c_str(), s.held_out[c] ? "held out" : "training",
+                s.identified_errors[c], s.analytic_errors[c]);
+  std::printf("  RMS training %.4g (analytic %.4g), held out %.4g (analytic %.4g); evaluation %.3f s\n",
+              s.training_error, s.analytic_training_error, s.held_out_error, s.analytic_held_out_error,
+              s.evaluation_seconds);
+}
+
+int run_identify(const IdentifyCli& o) {
+  io::ReadOptions ro;
+  ro.metres_per_unit = metres_per_unit(o.in.unit);
+  const mesh::Mesh mesh = io::read_mesh(o.in.mesh_path, ro);
+  const material::Material material{material::law_from_name(o.law), o.in.young, o.in.poisson, material::Plane::kStress,
+                                    o.in.thickness};
+  material::validate(material);
+  const identify::IdentifyOptions options = identify_options(o, mesh);
+  const std::string analytic =
+      o.compare != "auto" ? o.compare : (mesh.kind == mesh::ElementKind::kTet ? "any-nu-tet" : "any-nu-triangle");
+  std::printf(
+      "hooke identify: %s, %d nodes, %d %s elements, E %.6g Pa, nu %.4g, reference %s\n", mesh.source.c_str(),
+      mesh.node_count(), mesh.element_count(), std::string(mesh::element_kind_name(mesh.kind)).c_str(),
+      material.youngs_modulus, material.poisson_ratio,
+      o.reference.front() == "fem" ? (std::string(material::law_name(material.law)) + " FEM").c_str() : "files");
+  const auto cases = reference_cases(o, mesh, material);
+  const experiments::IdentificationStudy study =
+      experiments::identification_study(mesh, material, cases, options, analytic);
+  print_study(study, options);
+  const calibrate::CalibratedModel model = experiments::identified_model(mesh, material, o.density, study, options);
+
+  OutputTransaction outputs;  // the reference files, the model and the report together, the report last
+  if (!o.write_reference.empty()) {
+    const auto dir = outputs.stage_folder(o.write_reference);
+    for (std::size_t c = 0; c < cases.size(); ++c)
+      experiments::write_reference(dir / ("case_" + std::to_string(c + 1) + ".vtu"), mesh, cases[c]);
+  }
+  const bool staged_model = std::filesystem::path(o.output).extension() != ".vtu";  // .vtu writes two files itself
+  if (staged_model) calibrate::write_model(outputs.stage_file(o.output), model);
+  if (!o.report.empty())
+    write_file_atomically(outputs.stage_file(o.report),
+                          [&](std::ostream& out) { out << experiments::identification_report_json(study, options); });
+  outputs.commit();
+  if (!staged_model) calibrate::write_model(o.output, model);
+  std::printf("  wrote     %s%s%s%s%s\n", o.output.c_str(), o.report.empty() ? "" : ", ", o.report.c_str(),
+              o.write_reference.empty() ? "" : ", ", o.write_reference.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Action add_identify_command(CLI::App& app) {
+  auto o = std::make_shared<IdentifyCli>();
+  CLI::App* cmd =
+      app.add_subcommand("identify", "Identify a spring model from reference deformations (Lloyd et al. Eq. 1-2)");
+  add_model_input_options(cmd, o->in);
+  cmd->add_option("--law", o->law, "Law of the FEM reference: linear, stvk or neohookean")->capture_default_str();
+  cmd->add_option("--params", o->params,
+                  "springs, springs+volume or springs+volume+rest-length (auto: springs+volume on tets, springs on "
+                  "triangles)")
+      ->capture_default_str();
+  cmd->add_option("--objective", o->objective, "forces (Eq. 2) or positions (Eq. 1, from the Eq. 2 fit)")
+      ->capture_default_str();
+  cmd->add_option("--reference", o->reference,
+                  "fem (12 load cases in every direction from hooke's FEM), or reference VTU files with point data "
+                  "displacement, force and fixed")
+      ->capture_default_str();
+  cmd->add_option("--held-out-reference", o->held_out_reference, "Reference files kept out of the fit (with files)");
+  cmd->add_option("--strain", o->loads.strain, "fem: largest displacement of each case / the body's extent")
+      ->capture_default_str();
+  cmd->add_option("--held-out", o->loads.held_out, "fem: random load cases kept out of the fit")->capture_default_str();
+  cmd->add_option("--seed", o->loads.seed, "fem: seed of the random cases")->capture_default_str();
+  cmd->add_option("--regularize", o->regularization, "Weight of the penalty toward the mean stiffness (Sec. 2)")
+      ->capture_default_str();
+  cmd->add_option("--stiffness-floor", o->stiffness_floor, "Smallest k as a fraction of the mean k")
+      ->capture_default_str();
+  cmd->add_option("--iterations", o->iterations, "positions: iterations at most")->capture_default_str();
+  cmd->add_option("--compare", o->compare, "Analytic model measured beside it (auto: any-nu-tet / any-nu-triangle)")
+      ->capture_default_str();
+  cmd->add_option("--density", o->density, "Density for the lumped masses, kg/m^3")->capture_default_str();
+  cmd->add_option("--report", o->report, "JSON report of the identification");
+  cmd->add_option("--write-reference", o->write_reference, "Folder to write the reference cases to (VTU)");
+  cmd->add_option("-o,--output", o->output, "Model file: .json (the whole model), .vtu or .csv")->required();
+  return [o] { return run_identify(*o); };
+}
+
+}  // namespace hooke::cli

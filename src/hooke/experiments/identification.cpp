@@ -1,0 +1,369 @@
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <hooke/calibrate/method.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/experiments/identification.hpp>
+#include <hooke/fem/elastic_block.hpp>
+#include <hooke/identify/positions_objective.hpp>
+#include <hooke/io/vtu.hpp>
+#include <hooke/mesh/measure.hpp>
+#include <hooke/mesh/topology.hpp>
+#include <hooke/model/mass.hpp>
+#include <hooke/solve/detail/reduce.hpp>
+#include <hooke/solve/sparse_cholesky.hpp>
+#include <nlohmann/json.hpp>
+#include <random>
+
+namespace hooke::experiments {
+namespace {
+
+constexpr const char* kAxes = "xyz";
+
+// Boundary facets with their outward unit normals, centroids and measures.
+struct Boundary {
+  RowMatXi facets;
+  RowMatX normals, centroids;
+  VecX measures;
+};
+
+Boundary boundary_of(const mesh::Mesh& mesh) {
+  Boundary b;
+  b.facets = mesh::boundary_facets(mesh);
+  b.measures = mesh::facet_measures(mesh, b.facets);
+  const int d = mesh.dim(), n = static_cast<int>(b.facets.rows());
+  b.normals.resize(n, d);
+  b.centroids = RowMatX::Zero(n, d);
+  for (int f = 0; f < n; ++f) {
+    for (int a = 0; a < b.facets.cols(); ++a) b.centroids.row(f) += mesh.nodes.row(b.facets(f, a));
+    b.centroids.row(f) /= static_cast<double>(b.facets.cols());
+    if (d == 3) {
+      const Vec3 p0 = mesh.nodes.row(b.facets(f, 0)), p1 = mesh.nodes.row(b.facets(f, 1)),
+                 p2 = mesh.nodes.row(b.facets(f, 2));
+      b.normals.row(f) = (p1 - p0).cross(p2 - p0).normalized();
+    } else {
+      const Vec2 e = mesh.nodes.row(b.facets(f, 1)) - mesh.nodes.row(b.facets(f, 0));
+      b.normals.row(f) = Vec2(e.y(), -e.x()).normalized();
+    }
+  }
+  return b;
+}
+
+// The supported and loaded facets of one axis: outward normal within 60 degrees of -a (+a), centroid in the lowest
+// (highest) quarter of the extent along a.
+struct AxisEnds {
+  int axis = 0;
+  double extent = 0.0;
+  std::vector<char> fixed_dofs;
+  std::vector<int> loaded;  // facets
+};
+
+AxisEnds axis_ends(const mesh::Mesh& mesh, const Boundary& b, int axis) {
+  AxisEnds e;
+  e.axis = axis;
+  const double low = mesh.nodes.col(axis).minCoeff(), high = mesh.nodes.col(axis).maxCoeff();
+  e.extent = high - low;
+  const int d = mesh.dim();
+  e.fixed_dofs.assign(static_cast<std::size_t>(d * mesh.node_count()), 0);
+  bool supported = false;
+  for (Eigen::Index f = 0; f < b.facets.rows(); ++f) {
+    const double n = b.normals(f, axis), c = b.centroids(f, axis);
+    if (n < -0.5 && c <= low + 0.25 * e.extent) {
+      supported = true;
+      for (int a = 0; a < b.facets.cols(); ++a)
+        for (int k = 0; k < d; ++k) e.fixed_dofs[static_cast<std::size_t>(d * b.facets(f, a) + k)] = 1;
+    } else if (n > 0.5 && c >= high - 0.25 * e.extent) {
+      e.loaded.push_back(static_cast<int>(f));
+    }
+  }
+  if (!supported || e.loaded.empty())
+    throw InvalidArgument(std::string("reference loads: ") + mesh.source + " has no boundary facets facing the " +
+                          (supported ? "high" : "low") + " end of the " + kAxes[axis] + " axis");
+  return e;
+}
+
+// Consistent nodal forces of a traction field t(centroid) (Pa) on the given facets: t x measure (x thickness in 2D)
+// shared equally by the facet's nodes.
+template <class Traction>
+VecX traction_forces(const mesh::Mesh& mesh, const Boundary& b, const std::vector<int>& facets, double thickness,
+                     Traction traction) {
+  const int d = mesh.dim();
+  VecX f = VecX::Zero(d * mesh.node_count());
+  const double scale = d == 2 ? thickness : 1.0;
+  for (int facet : facets) {
+    const VecX t = traction(b.centroids.row(facet).transpose());
+    const double share = scale * b.measures(facet) / static_cast<double>(b.facets.cols());
+    for (int a = 0; a < b.facets.cols(); ++a) f.segment(d * b.facets(facet, a), d) += share * t;
+  }
+  return f;
+}
+
+// A case before solving: its supports and its forces at a unit traction scale.
+struct PendingCase {
+  std::string name;
+  const AxisEnds* ends;
+  VecX unit_force;
+  bool held_out;
+};
+
+std::vector<PendingCase> pending_cases(const mesh::Mesh& mesh, const Boundary& b, const std::vector<AxisEnds>& ends,
+                                       const ReferenceLoads& loads, double thickness) {
+  const int d = mesh.dim();
+  std::vector<PendingCase> out;
+  for (const AxisEnds& e : ends) {
+    const std::string end = std::string(" on the +") + kAxes[e.axis] + " end";
+    for (int sign : {+1, -1}) {
+      VecX dir = VecX::Zero(d);
+      dir(e.axis) = sign;
+      out.push_back({(sign > 0 ? "stretch" : "compress") + end, &e,
+                     traction_forces(mesh, b, e.loaded, thickness, [&](const VecX&) { return dir; }), false});
+    }
+    for (int other = 0; other < d; ++other) {
+      if (other == e.axis) continue;
+      VecX dir = VecX::Zero(d);
+      dir(other) = 1.0;
+      out.push_back({std::string("shear +") + kAxes[other] + end, &e,
+                     traction_forces(mesh, b, e.loaded, thickness, [&](const VecX&) { return dir; }), false});
+    }
+  }
+  std::mt19937 rng(loads.seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  VecX centre = VecX(mesh.nodes.colwise().mean().transpose());
+  for (int r = 0; r < loads.held_out; ++r) {
+    const AxisEnds& e = ends[static_cast<std::size_t>(r % d)];
+    VecX dir(d), slope(d);
+    for (int k = 0; k < d; ++k) {
+      dir(k) = normal(rng);
+      slope(k) = uniform(rng);
+    }
+    dir.normalize();
+    const double size = std::max(e.extent, 1e-300);
+    out.push_back(
+        {"random " + std::to_string(r + 1) + " on the +" + kAxes[e.axis] + " end", &e,
+         traction_forces(mesh, b, e.loaded, thickness,
+                         [&](const VecX& c) { return VecX(dir * (1.0 + 0.5 * slope.dot(c - centre) / size)); }),
+         true});
+  }
+  return out;
+}
+
+double rms(const std::vector<double>& errors, const std::vector<char>& held_out, bool which) {
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t c = 0; c < errors.size(); ++c)
+    if (static_cast<bool>(held_out[c]) == which) {
+      sum += errors[c] * errors[c];
+      ++n;
+    }
+  return n ? std::sqrt(sum / n) : 0.0;
+}
+
+}  // namespace
+
+std::vector<identify::ReferenceCase> fem_reference_cases(const mesh::Mesh& mesh, const material::Material& material,
+                                                         const ReferenceLoads& loads) {
+  if (mesh.kind != mesh::ElementKind::kTet && mesh.kind != mesh::ElementKind::kTriangle)
+    throw InvalidArgument("reference loads need a tet or triangle mesh");
+  if (!(loads.strain > 0.0) || !std::isfinite(loads.strain))
+    throw InvalidArgument("reference loads: the strain must be positive");
+  const int d = mesh.dim();
+  const Boundary b = boundary_of(mesh);
+  std::vector<AxisEnds> ends;
+  for (int a = 0; a < d; ++a) ends.push_back(axis_ends(mesh, b, a));
+  const std::vector<PendingCase> pending = pending_cases(mesh, b, ends, loads, material.thickness);
+
+  const VecX rest = Eigen::Map<const VecX>(RowMatX(mesh.nodes).data(), mesh.nodes.size());
+  material::Material linear = material;
+  linear.law = material::Law::kLinear;
+  auto linear_model = std::make_shared<model::Model>(d, rest);
+  linear_model->add(fem::make_elastic_block(mesh, linear));
+  const SparseMatrix k = linear_model->hessian(rest);
+  std::shared_ptr<model::Model> nonlinear_model;
+  if (material.law != material::Law::kLinear) {
+    nonlinear_model = std::make_shared<model::Model>(d, rest);
+    nonlinear_model->add(fem::make_elastic_block(mesh, material));
+  }
+
+  std::vector<identify::ReferenceCase> out;
+  for (const AxisEnds& e : ends) {
+    std::vector<int> free;
+    for (int k2 = 0; k2 < static_cast<int>(rest.size()); ++k2)
+      if (!e.fixed_dofs[static_cast<std::size_t>(k2)]) free.push_back(k2);
+    const solve::detail::FreeMap map(free, static_cast<int>(rest.size()));
+    solve::SparseCholesky cholesky;
+    if (!cholesky.factorize(map.restrict(k)))
+      throw SolverFailure("reference loads: the FEM stiffness with the " + std::string(1, kAxes[e.axis]) +
+                          " supports is singular (is the mesh connected?)");
+    for (const PendingCase& p : pending) {
+      if (p.ends != &e) continue;
+      const VecX u_free = cholesky.solve(map.restrict(p.unit_force));
+      VecX u = VecX::Zero(rest.size());
+      double largest = 0.0;
+      for (int i = 0; i < map.size(); ++i) u(free[static_cast<std::size_t>(i)]) = u_free(i);
+      for (int n = 0; n < mesh.node_count(); ++n) largest = std::max(largest, u.segment(d * n, d).norm());
+      const double scale = loads.strain * e.extent / largest;
+      identify::ReferenceCase c{p.name, rest + scale * u, scale * p.unit_force, e.fixed_dofs, p.held_out};
+      if (nonlinear_model) {
+        const solve::StaticResult r = identify::reference_equilibrium(nonlinear_model, c, {}, c.positions);
+        if (r.report.status != solve::SolveStatus::kConverged)
+          throw SolverFailure("reference case '" + c.name + "' (" + std::string(material::law_name(material.law)) +
+                              " FEM): " + r.report.message);
+        c.positions = r.positions;
+      }
+      for (std::size_t q = 0; q < c.fixed_dofs.size(); ++q)
+        if (c.fixed_dofs[q]) c.external_force(static_cast<Eigen::Index>(q)) = 0.0;
+      out.push_back(std::move(c));
+    }
+  }
+  return out;
+}
+
+void write_reference(const std::filesystem::path& path, const mesh::Mesh& mesh,
+                     const identify::ReferenceCase& reference) {
+  const int d = mesh.dim();
+  const VecX rest = Eigen::Map<const VecX>(RowMatX(mesh.nodes).data(), mesh.nodes.size());
+  identify::validate_reference(reference, rest.size());
+  io::Field displacement{"displacement", d, reference.positions - rest};
+  io::Field force{"force", d, reference.external_force};
+  io::Field fixed{"fixed", 1, VecX::Zero(mesh.node_count())};
+  for (int n = 0; n < mesh.node_count(); ++n) {
+    fixed.values(n) = reference.fixed_dofs[static_cast<std::size_t>(d * n)] ? 1.0 : 0.0;
+    if (fixed.values(n) != 0.0) force.values.segment(d * n, d).setZero();
+  }
+  io::write_vtu(path, mesh, {displacement, force, fixed});
+}
+
+identify::ReferenceCase read_reference(const std::filesystem::path& path, const mesh::Mesh& mesh) {
+  const io::VtuContents vtu = io::read_vtu(path);
+  const int d = mesh.dim(), n = mesh.node_count();
+  const std::string where = path.string();
+  if (vtu.mesh.node_count() != n)
+    throw InvalidArgument(where + ": " + std::to_string(vtu.mesh.node_count()) + " points where the mesh has " +
+                          std::to_string(n) + " nodes");
+  const double tolerance = 1e-9 * mesh::bounding_box_diagonal(mesh);
+  for (int i = 0; i < n; ++i)
+    if ((vtu.mesh.nodes.row(i).head(d) - mesh.nodes.row(i)).norm() > tolerance)
+      throw InvalidArgument(where + ": point " + std::to_string(i) + " is not at node " + std::to_string(i) + " of " +
+                            mesh.source);
+  const auto field = [&](const std::string& name, bool required) -> const io::Field* {
+    for (const auto& f : vtu.point_data)
+      if (f.name == name) {
+        if (f.values.size() != static_cast<Eigen::Index>(f.components) * n || f.components < (name == "fixed" ? 1 : d))
+          throw InvalidArgument(where + ": point data '" + name + "' needs " + std::to_string(name == "fixed" ? 1 : d) +
+                                " components per point");
+        return &f;
+      }
+    if (required) throw InvalidArgument(where + ": no point data '" + name + "' (displacement in m, force in N)");
+    return nullptr;
+  };
+  const io::Field* u = field("displacement", true);
+  const io::Field* f = field("force", true);
+  const io::Field* fixed = field("fixed", false);
+  identify::ReferenceCase c{path.filename().string(), VecX(d * n), VecX(d * n),
+                            std::vector<char>(static_cast<std::size_t>(d * n), 0), false};
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < d; ++k) {
+      c.positions(d * i + k) = mesh.nodes(i, k) + u->values(u->components * i + k);
+      c.external_force(d * i + k) = f->values(f->components * i + k);
+      if (fixed && fixed->values(i) != 0.0) c.fixed_dofs[static_cast<std::size_t>(d * i + k)] = 1;
+    }
+  identify::validate_reference(c, d * n);
+  return c;
+}
+
+IdentificationStudy identification_study(const mesh::Mesh& mesh, const material::Material& material,
+                                         const std::vector<identify::ReferenceCase>& cases,
+                                         const identify::IdentifyOptions& options, const std::string& analytic_method) {
+  IdentificationStudy s;
+  const calibrate::SpringModel analytic =
+      calibrate::calibrate(mesh, {material}, calibrate::method_from_name(analytic_method));
+  identify::IdentifyOptions with_start = options;
+  if (!with_start.start_model) with_start.start_model = analytic;
+  s.identification = identify::identify(mesh, cases, with_start);
+  s.analytic_method = analytic_method;
+  const auto t0 = std::chrono::steady_clock::now();
+  s.identified_errors = identify::position_errors(mesh, s.identification.springs, cases, options.statics);
+  s.analytic_errors = identify::position_errors(mesh, analytic, cases, options.statics);
+  std::vector<identify::ReferenceCase> training;
+  for (const auto& c : cases)
+    if (!c.held_out) training.push_back(c);
+  const identify::ParameterLayout layout = identify::parameter_layout(
+      mesh, analytic.volume_tets.rows() ? identify::Parameters::kSpringsVolume : identify::Parameters::kSprings);
+  s.analytic_force_residual = identify::force_residual(layout, identify::parameters_of(layout, analytic), training);
+  s.evaluation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (const auto& c : cases) {
+    s.case_names.push_back(c.name);
+    s.held_out.push_back(c.held_out ? 1 : 0);
+  }
+  s.training_error = rms(s.identified_errors, s.held_out, false);
+  s.held_out_error = rms(s.identified_errors, s.held_out, true);
+  s.analytic_training_error = rms(s.analytic_errors, s.held_out, false);
+  s.analytic_held_out_error = rms(s.analytic_errors, s.held_out, true);
+  return s;
+}
+
+calibrate::CalibratedModel identified_model(const mesh::Mesh& mesh, const material::Material& material, double density,
+                                            const IdentificationStudy& study,
+                                            const identify::IdentifyOptions& options) {
+  calibrate::CalibratedModel m;
+  m.method = "identified";
+  const auto training = std::count(study.held_out.begin(), study.held_out.end(), 0);
+  m.equation = std::string("Lloyd et al. 2007, ") +
+               (options.objective == identify::Objective::kForces ? "Eq. 2 (forces)" : "Eq. 1 (positions)") +
+               ", parameters " + std::string(identify::parameters_name(options.parameters)) + ", identified from " +
+               std::to_string(training) + " reference cases";
+  m.mesh = mesh;
+  m.material = material;
+  m.density = density;
+  m.masses = model::lumped_masses(mesh, density, material.thickness);
+  m.springs = study.identification.springs;
+  calibrate::validate_model(m, "the identified model");
+  return m;
+}
+
+std::string identification_report_json(const IdentificationStudy& study, const identify::IdentifyOptions& options) {
+  const identify::IdentifyReport& r = study.identification.report;
+  nlohmann::json cases = nlohmann::json::array();
+  for (std::size_t c = 0; c < study.case_names.size(); ++c)
+    cases.push_back({{"name", study.case_names[c]},
+                     {"held_out", static_cast<bool>(study.held_out[c])},
+                     {"identified_relative_l2", study.identified_errors[c]},
+                     {"analytic_relative_l2", study.analytic_errors[c]}});
+  const nlohmann::json j = {{"objective", identify::objective_name(options.objective)},
+                            {"parameters", identify::parameters_name(options.parameters)},
+                            {"regularization", options.regularization},
+                            {"stiffness_floor", options.stiffness_floor},
+                            {"analytic_method", study.analytic_method},
+                            {"cases", cases},
+                            {"training_relative_l2_rms", study.training_error},
+                            {"held_out_relative_l2_rms", study.held_out_error},
+                            {"analytic_training_relative_l2_rms", study.analytic_training_error},
+                            {"analytic_held_out_relative_l2_rms", study.analytic_held_out_error},
+                            {"force_residual", r.force_residual},
+                            {"analytic_force_residual", study.analytic_force_residual},
+                            {"least_squares",
+                             {{"iterations", r.least_squares.iterations},
+                              {"cg_iterations", r.least_squares.cg_iterations},
+                              {"products", r.least_squares.products},
+                              {"projected_gradient", r.least_squares.projected_gradient},
+                              {"at_bound", r.least_squares.at_bound},
+                              {"converged", r.least_squares.converged}}},
+                            {"positions",
+                             {{"iterations", r.position_iterations},
+                              {"static_solves", r.static_solves},
+                              {"eq2_objective", r.eq2_positions_objective},
+                              {"start_model_objective", r.start_model_objective},
+                              {"started_from_model", r.started_from_model},
+                              {"history", r.position_history}}},
+                            {"clamped_rest_lengths", r.clamped_rest_lengths},
+                            {"springs", study.identification.layout.spring_count()},
+                            {"volume_terms", study.identification.layout.volume_count()},
+                            {"min_stiffness_n_per_m", r.min_stiffness},
+                            {"max_stiffness_n_per_m", r.max_stiffness},
+                            {"identification_seconds", r.seconds},
+                            {"evaluation_seconds", study.evaluation_seconds}};
+  return j.dump(2) + "\n";
+}
+
+}  // namespace hooke::experiments

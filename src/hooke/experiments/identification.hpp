@@ -1,0 +1,79 @@
+#pragma once
+/// Identification as an experiment: reference deformations from hooke's FEM under load cases in every direction
+/// (Lloyd et al. 2007, Sec. 2: "small stretching, compression and shear deformations in all directions"), the
+/// fit of Eq. 1 or Eq. 2, and the identified model's error on training and held-out cases beside an analytic model's.
+#include <filesystem>
+#include <hooke/calibrate/calibrated_model.hpp>
+#include <hooke/identify/identify.hpp>
+#include <hooke/material/material.hpp>
+#include <hooke/mesh/mesh.hpp>
+#include <string>
+#include <vector>
+
+namespace hooke::experiments {
+
+struct ReferenceLoads {
+  /// each case's traction is scaled so that the linear FEM's largest node displacement is strain x the body's
+  /// extent along the loaded axis; default 0.01
+  double strain = 0.01;
+  int held_out = 4;      ///< random cases (random direction, linearly varying traction) kept out of the fit, default 4
+  unsigned seed = 2007;  ///< of the random cases
+};
+
+/// Reference cases from the FEM of `material` (its law: linear, or StVK / Neo-Hookean solved by Newton). Training:
+/// for each axis a, the boundary facets at the low end of a (outward normal within 60 degrees of -a, centroid in
+/// the lowest quarter of the extent) are clamped and a uniform traction acts on those at the high end, along +a
+/// (stretch), -a (compress) and each other axis (shear): 12 cases on a tet mesh, 6 on a triangle mesh. Held out:
+/// `held_out` cases on the same supports with a random direction and a traction varying linearly over the patch.
+/// The linear FEM factorises once per support set.
+/// @param mesh      validated tet or triangle mesh, m
+/// @param material  E (Pa), nu, thickness for 2D, law
+/// @throws InvalidArgument when an end of an axis has no facets; SolverFailure when a nonlinear case fails
+std::vector<identify::ReferenceCase> fem_reference_cases(const mesh::Mesh& mesh, const material::Material& material,
+                                                         const ReferenceLoads& loads = {});
+
+/// A reference case as a VTU file: the rest mesh with point data "displacement" (m, 3 components), "force" (N, the
+/// applied nodal force; ignored at supports) and "fixed" (1 at supports, 0 elsewhere). Written atomically.
+void write_reference(const std::filesystem::path& path, const mesh::Mesh& mesh,
+                     const identify::ReferenceCase& reference);
+/// Reads a reference written so (or measured: any VTU with those point arrays on the same nodes as `mesh`;
+/// "fixed" may be absent, then no node is a support). The case is named after the file.
+/// @throws IoError, ParseError; InvalidArgument naming the file when the nodes differ from `mesh`'s or an array
+///   is missing or has the wrong number of components
+identify::ReferenceCase read_reference(const std::filesystem::path& path, const mesh::Mesh& mesh);
+
+/// What `hooke identify` reports.
+struct IdentificationStudy {
+  identify::Identification identification;
+  std::string analytic_method;            ///< the analytic model compared ("any-nu-tet" on tets)
+  std::vector<std::string> case_names;    ///< per reference case
+  std::vector<char> held_out;             ///< per case
+  std::vector<double> identified_errors;  ///< per case: relative L2 |x - p_ref| / |p_ref - X| of the identified model
+  std::vector<double> analytic_errors;    ///< the same for the analytic model
+  double training_error = 0.0;            ///< RMS over training cases of identified_errors
+  double held_out_error = 0.0;            ///< RMS over held-out cases (0 when there are none)
+  double analytic_training_error = 0.0;   ///< RMS of analytic_errors over the training cases
+  double analytic_held_out_error = 0.0;   ///< RMS of analytic_errors over the held-out cases
+  double analytic_force_residual = 0.0;   ///< Eq. 2's relative residual of the analytic model on the training cases
+  double evaluation_seconds = 0.0;        ///< time of the equilibria of both models on every case
+};
+
+/// Identifies a model from `cases` and measures it and the analytic `analytic_method` model (calibrated from
+/// `material`) on every case by static equilibrium (Newton). The analytic model is Eq. 1's second start
+/// (IdentifyOptions::start_model) unless the options name one.
+/// @throws InvalidArgument for an unknown method or bad cases; SolverFailure from identify()
+IdentificationStudy identification_study(const mesh::Mesh& mesh, const material::Material& material,
+                                         const std::vector<identify::ReferenceCase>& cases,
+                                         const identify::IdentifyOptions& options, const std::string& analytic_method);
+
+/// The identified model as a model file's contents (method "identified", its equation naming the objective, the
+/// parameters and the number of cases), with lumped masses of `density` (kg/m^3) and the analytic model's errors
+/// beside its own in the certificate-free warnings-free form that calibrate::write_model writes.
+calibrate::CalibratedModel identified_model(const mesh::Mesh& mesh, const material::Material& material, double density,
+                                            const IdentificationStudy& study, const identify::IdentifyOptions& options);
+
+/// The study as JSON: options, per case name / held out / both errors, RMS errors, the least-squares and Eq. 1
+/// iterations, the force residual, the k range and the times.
+std::string identification_report_json(const IdentificationStudy& study, const identify::IdentifyOptions& options);
+
+}  // namespace hooke::experiments
