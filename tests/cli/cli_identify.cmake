@@ -1,0 +1,61 @@
+# hooke identify: from hooke's FEM (and back from the reference files it wrote), a model file that compare runs;
+# bad input exits 2 naming the problem and writes nothing.
+file(REMOVE_RECURSE ${OUT})
+file(MAKE_DIRECTORY ${OUT})
+set(mesh ${MESHES}/cylinder.msh)
+
+function(run_ok name)
+  execute_process(COMMAND ${HOOKE} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${out}${err}")
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "hooke ${name} failed with ${rc}")
+  endif()
+  set(out "${out}" PARENT_SCOPE)
+endfunction()
+
+function(run_fails name pattern file)
+  execute_process(COMMAND ${HOOKE} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "${pattern}" OR (NOT file STREQUAL "" AND EXISTS ${file}))
+    message(FATAL_ERROR "${name} must fail with exit code 2 naming '${pattern}' (got ${rc}: ${err})")
+  endif()
+  message("refused as it should: ${err}")
+endfunction()
+
+run_ok(identify identify ${mesh} --young 14630 --poisson 0.45 --objective positions --iterations 5 --held-out 2
+       --report ${OUT}/report.json --write-reference ${OUT}/cases -o ${OUT}/id.json)
+if(NOT out MATCHES "RMS training" OR NOT EXISTS ${OUT}/id.json OR NOT EXISTS ${OUT}/cases/case_14.vtu)
+  message(FATAL_ERROR "identify did not report, write the model or the 14 reference files")
+endif()
+file(READ ${OUT}/report.json report)
+string(JSON held GET "${report}" held_out_relative_l2_rms)
+string(JSON analytic GET "${report}" analytic_held_out_relative_l2_rms)
+if(NOT held LESS analytic)
+  message(FATAL_ERROR "held-out error ${held} is not below the analytic model's ${analytic}")
+endif()
+file(READ ${OUT}/id.json json)
+string(JSON method GET "${json}" method)
+if(NOT method STREQUAL "identified")
+  message(FATAL_ERROR "id.json: method '${method}'")
+endif()
+run_ok(compare compare --model ${OUT}/id.json --load shear --strain 0.001 -o ${OUT}/compare)
+
+# From the files it wrote: the first 12 to fit, the last 2 held out.
+set(files "")
+foreach(i RANGE 1 12)
+  list(APPEND files ${OUT}/cases/case_${i}.vtu)
+endforeach()
+run_ok(identify_files identify ${mesh} --young 14630 --poisson 0.45 --params springs --reference ${files}
+       --held-out-reference ${OUT}/cases/case_13.vtu ${OUT}/cases/case_14.vtu -o ${OUT}/from_files.csv)
+if(NOT out MATCHES "reference files" OR NOT out MATCHES "case_14.vtu +held out" OR NOT EXISTS ${OUT}/from_files.csv)
+  message(FATAL_ERROR "identify from files did not fit 12 and hold out 2")
+endif()
+
+run_fails(wrong_mesh "case_1.vtu: .* points where the mesh has" ${OUT}/x.json identify ${MESHES}/cone.msh --young 14630
+          --poisson 0.45 --reference ${OUT}/cases/case_1.vtu -o ${OUT}/x.json)
+run_fails(volume_on_triangles "need a tet mesh" ${OUT}/x.json identify ${MESHES}/rectangle_tri.msh --young 14630
+          --poisson 0.3 --params springs+volume -o ${OUT}/x.json)
+run_fails(bad_objective "unknown identification objective 'energy'" ${OUT}/x.json identify ${mesh} --young 14630
+          --poisson 0.3 --objective energy -o ${OUT}/x.json)
+run_fails(bad_strain "strain must be positive" ${OUT}/x.json identify ${mesh} --young 14630 --poisson 0.3
+          --strain -1 -o ${OUT}/x.json)
+run_fails(nu_half "oisson" ${OUT}/x.json identify ${mesh} --young 14630 --poisson 0.5 -o ${OUT}/x.json)
