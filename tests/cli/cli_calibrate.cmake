@@ -4,22 +4,7 @@ file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 set(mesh ${MESHES}/cylinder_hole.msh)
 
-function(run_ok name)
-  execute_process(COMMAND ${HOOKE} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message("${out}${err}")
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "hooke ${name} failed with ${rc}")
-  endif()
-  set(out "${out}" PARENT_SCOPE)
-endfunction()
-
-function(run_fails name pattern file)
-  execute_process(COMMAND ${HOOKE} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 2 OR NOT err MATCHES "${pattern}" OR (NOT file STREQUAL "" AND EXISTS ${file}))
-    message(FATAL_ERROR "${name} must fail with exit code 2 naming '${pattern}' (got ${rc}: ${err})")
-  endif()
-  message("refused as it should: ${err}")
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/run_hooke.cmake)
 
 # The acceptance command of the model-file issue.
 run_ok(calibrate calibrate ${mesh} --young 14630 --poisson 0.3 --method lloyd-tet --certify -o ${OUT}/m.json)
