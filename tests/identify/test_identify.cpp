@@ -189,10 +189,15 @@ TEST(Identify, RestLengthsOfASelfStressedModelAreRecovered) {
   identify::IdentifyOptions options;
   options.parameters = Parameters::kSpringsVolumeRestLength;
   const identify::Identification id = identify::identify(mesh, cases_of(mesh, made, 6, 0.01, 32), options);
+  EXPECT_TRUE(id.report.least_squares.converged)
+      << id.report.least_squares.iterations << " iterations, projected gradient "
+      << id.report.least_squares.projected_gradient;
   EXPECT_LT(id.report.force_residual, 1e-7);
   EXPECT_EQ(id.report.clamped_rest_lengths, 0);
   EXPECT_GT((made.rest_length - layout.rest_length).cwiseQuotient(layout.rest_length).cwiseAbs().maxCoeff(), 0.01);
-  EXPECT_LT((id.springs.rest_length - made.rest_length).cwiseQuotient(made.rest_length).cwiseAbs().maxCoeff(), 1e-6);
+  // the self-stress directions are the worst-conditioned of the problem (only the rest case and the small loads see
+  // them): at the solver's tolerance (projected gradient 1e-9) l0 is known to a few parts per million
+  EXPECT_LT((id.springs.rest_length - made.rest_length).cwiseQuotient(made.rest_length).cwiseAbs().maxCoeff(), 1e-5);
   EXPECT_LT((id.springs.stiffness - made.stiffness).cwiseQuotient(made.stiffness).cwiseAbs().maxCoeff(), 1e-5);
   EXPECT_LT(
       (id.springs.volume_stiffness - made.volume_stiffness).cwiseQuotient(made.volume_stiffness).cwiseAbs().maxCoeff(),

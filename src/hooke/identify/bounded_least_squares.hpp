@@ -23,8 +23,8 @@ struct BoundedLeastSquaresOptions {
   /// converged when the projected gradient's norm <= tolerance x |A^T b| (both in column-scaled variables),
   /// default 1e-9
   double tolerance = 1e-9;
-  int max_iterations = 1000;    ///< outer iterations (a projected-gradient phase plus a subspace phase), default 1000
-  int max_cg_iterations = 500;  ///< conjugate-gradient iterations per subspace phase, default 500
+  int max_iterations = 1000;   ///< outer iterations (a projected-gradient phase plus a subspace phase), default 1000
+  int max_cg_iterations = 50;  ///< conjugate-gradient iterations per subspace phase, default 50
   int projected_gradient_steps = 5;  ///< projected-gradient steps per outer iteration at most, default 5
 };
 

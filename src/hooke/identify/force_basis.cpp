@@ -56,14 +56,19 @@ void ForceBasis::apply(const Eigen::Ref<const VecX>& theta, Eigen::Ref<VecX> for
 }
 
 namespace {
-// r restricted to the rows of the mask, per node (zero where masked).
-double masked_dot(const Eigen::Ref<const VecX>& r, const std::vector<char>& mask, int offset, const double* column,
-                  int d) {
-  double sum = 0.0;
-  for (int c = 0; c < d; ++c)
-    if (mask[offset + c]) sum += r(offset + c) * column[c];
-  return sum;
+template <int D>
+void spring_transpose(const ParameterLayout& layout, const RowMatX& stretch, const RowMatX& direction, const VecX& r,
+                      Eigen::Ref<VecX> theta_out) {
+  using V = Eigen::Matrix<double, D, 1>;
+  const int ns = layout.spring_count(), offsets = ns + layout.volume_count();
+  for (int s = 0; s < ns; ++s) {
+    const auto [i, j] = layout.pairs[s];
+    const V dr = r.segment<D>(D * j) - r.segment<D>(D * i);
+    theta_out(s) = stretch.row(s).template head<D>().dot(dr.transpose());
+    if (layout.offset_count()) theta_out(offsets + s) = direction.row(s).template head<D>().dot(dr.transpose());
+  }
 }
+
 double masked_norm(const std::vector<char>& mask, int offset, const double* column, int d) {
   double sum = 0.0;
   for (int c = 0; c < d; ++c)
@@ -74,18 +79,18 @@ double masked_norm(const std::vector<char>& mask, int offset, const double* colu
 
 void ForceBasis::apply_transpose(const Eigen::Ref<const VecX>& r, const std::vector<char>& row_mask,
                                  Eigen::Ref<VecX> theta_out) const {
-  const int d = m_dim, ns = m_layout.spring_count(), nt = m_layout.volume_count();
-  for (int s = 0; s < ns; ++s) {
-    const auto [i, j] = m_layout.pairs[s];
-    theta_out(s) =
-        masked_dot(r, row_mask, d * j, &m_stretch(s, 0), d) - masked_dot(r, row_mask, d * i, &m_stretch(s, 0), d);
-    if (m_layout.offset_count())
-      theta_out(ns + nt + s) =
-          masked_dot(r, row_mask, d * j, &m_direction(s, 0), d) - masked_dot(r, row_mask, d * i, &m_direction(s, 0), d);
-  }
+  const int ns = m_layout.spring_count(), nt = m_layout.volume_count();
+  VecX masked = r;  // rows outside the mask count as zero
+  for (Eigen::Index k = 0; k < masked.size(); ++k)
+    if (!row_mask[k]) masked(k) = 0.0;
+  if (m_dim == 2)
+    spring_transpose<2>(m_layout, m_stretch, m_direction, masked, theta_out);
+  else
+    spring_transpose<3>(m_layout, m_stretch, m_direction, masked, theta_out);
   for (int t = 0; t < nt; ++t) {
     double sum = 0.0;
-    for (int a = 0; a < 4; ++a) sum += masked_dot(r, row_mask, 3 * m_layout.tets(t, a), &m_volume(t, 3 * a), 3);
+    for (int a = 0; a < 4; ++a)
+      sum += m_volume.row(t).segment<3>(3 * a).dot(masked.segment<3>(3 * m_layout.tets(t, a)).transpose());
     theta_out(ns + t) = sum;
   }
 }

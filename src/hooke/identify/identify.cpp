@@ -155,16 +155,23 @@ VecX fit_forces(const ParameterLayout& layout, const std::vector<const Reference
   return solve_bounded_least_squares(a, bb, lower, start, options.least_squares, &report);
 }
 
-// Eq. 2 with every spring kept at or above stiffness_floor x the mean identified k (refitted when one fell below).
+// Eq. 2 with every spring kept at or above stiffness_floor x the mean k. The mean comes from a rough first fit
+// (tolerance 1e-2: a mean is settled long before the single springs are), then the fit itself with the floor.
 VecX fit_forces_with_floor(const ParameterLayout& layout, const std::vector<const ReferenceCase*>& cases,
                            const IdentifyOptions& options, BoundedLeastSquaresReport& report) {
   VecX lower = layout.lower_bounds();
-  VecX theta = fit_forces(layout, cases, options, lower, {}, report);
   const int ns = layout.spring_count();
-  const double floor = options.stiffness_floor * theta.head(ns).mean();
-  if (ns == 0 || !(floor > 0.0) || theta.head(ns).minCoeff() >= floor) return theta;
-  lower.head(ns).setConstant(floor);
-  return fit_forces(layout, cases, options, lower, theta, report);
+  if (ns == 0 || !(options.stiffness_floor > 0.0)) return fit_forces(layout, cases, options, lower, {}, report);
+  IdentifyOptions rough = options;
+  rough.least_squares.tolerance = std::max(options.least_squares.tolerance, 1e-2);
+  BoundedLeastSquaresReport first;
+  VecX theta = fit_forces(layout, cases, rough, lower, {}, first);
+  lower.head(ns).setConstant(options.stiffness_floor * theta.head(ns).mean());
+  theta = fit_forces(layout, cases, options, lower, theta, report);
+  report.iterations += first.iterations;  // the work of both solves
+  report.cg_iterations += first.cg_iterations;
+  report.products += first.products;
+  return theta;
 }
 
 // Eq. 1 by spectral projected gradients (Birgin, Martinez & Raydan 2000) in variables relative to the start, with a
