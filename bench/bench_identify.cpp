@@ -5,7 +5,8 @@
 // - BM_IdentifyForces: Lloyd's Eq. 2 for springs+volume (k per edge, k_V per tet) by bounded least squares.
 // Counters: unknowns, CG iterations, the relative force residual, and the process's peak resident memory (MB, the
 // high-water mark of the whole run so far).
-// Run: build/release/bench/hooke_bench --benchmark_filter=Identify
+// Run: build/release/bench/hooke_bench --benchmark_filter=Identify (studies of the solver: HOOKE_LSQ_TOL, HOOKE_REG,
+// HOOKE_CG, HOOKE_GP set the tolerance, --regularize, CG iterations and projected-gradient steps per outer iteration)
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
