@@ -1,7 +1,9 @@
 // hooke reproduce lloyd2007|arnab2008 [-o DIR] [--no-figures]: a paper's experiments with a report.
 #include <cstdio>
 #include <hooke/core/error.hpp>
+#include <hooke/core/log.hpp>
 #include <hooke/core/output_transaction.hpp>
+#include <hooke/experiments/nu_range.hpp>
 #include <hooke/experiments/reproduce_arnab2008.hpp>
 #include <hooke/experiments/reproduce_lloyd2007.hpp>
 #include <memory>
@@ -31,21 +33,48 @@ Action add_reproduce_command(CLI::App& app) {
   struct Options {
     std::string paper, out_dir, mesh_dir = HOOKE_MESH_DIR;
     bool no_figures = false;
+    experiments::NuRangeOptions nu_range;
   };
   auto o = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("reproduce", "Reproduce a paper's experiments and write a report");
-  cmd->add_option("paper", o->paper, "lloyd2007 or arnab2008")->required();
+  cmd->add_option("paper", o->paper, "lloyd2007, arnab2008, or nu-range (the study of every method over nu)")
+      ->required();
   cmd->add_option("-o,--output", o->out_dir, "Report folder (default out/<paper>)");
   cmd->add_option("--meshes", o->mesh_dir, "Folder of the committed meshes")->capture_default_str();
   cmd->add_flag("--no-figures", o->no_figures, "Write the figure specs (JSON) but do not run matplotlib");
+  cmd->add_option("--nu", o->nu_range.poisson, "nu-range: Poisson's ratios")->delimiter(',')->capture_default_str();
+  cmd->add_option("--methods", o->nu_range.methods, "nu-range: tet calibration methods")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--study-meshes", o->nu_range.meshes, "nu-range: committed meshes")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--large-strain", o->nu_range.large_strain, "nu-range: the large-deformation strain (0: none)")
+      ->capture_default_str();
   return [o] {
     if (o->out_dir.empty()) o->out_dir = "out/" + o->paper;
-    if (o->paper != "lloyd2007" && o->paper != "arnab2008")
-      throw InvalidArgument("unknown paper '" + o->paper + "' (available: lloyd2007, arnab2008)");
+    if (o->paper != "lloyd2007" && o->paper != "arnab2008" && o->paper != "nu-range")
+      throw InvalidArgument("unknown paper '" + o->paper + "' (available: lloyd2007, arnab2008, nu-range)");
     // One transaction (issue 16): report and figures are written into a staging folder and moved into place with the
     // report (.md) last, so a run killed at any instant leaves the previous report whole, with its figures.
     OutputTransaction outputs;
     const std::string staging = outputs.stage_folder(o->out_dir).string();
+    if (o->paper == "nu-range") {
+      const LogSink previous = set_log_sink([](LogLevel level, std::string_view message) {
+        std::fprintf(level >= LogLevel::kWarning ? stderr : stdout, "%.*s\n", static_cast<int>(message.size()),
+                     message.data());
+        std::fflush(stdout);
+      });
+      const auto report = experiments::reproduce_nu_range(o->mesh_dir, o->nu_range);
+      set_log_sink(previous);
+      experiments::write_nu_range_report(staging, report);
+      for (const auto& r : report.recommendations) std::printf("pick %s\n", r.c_str());
+      if (!o->no_figures) plot_figures(figure_specs(staging, report.figures));
+      outputs.commit({"nu_range.json", "nu_range.md"});
+      std::printf("wrote %s/nu_range.md, nu_range.json and %zu figures (%.0f s)\n", o->out_dir.c_str(),
+                  report.figures.size(), report.seconds);
+      return 0;
+    }
     if (o->paper == "arnab2008") {
       const auto report = experiments::reproduce_arnab2008();
       experiments::write_arnab2008_report(staging, report);

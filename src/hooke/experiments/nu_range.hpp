@@ -1,0 +1,51 @@
+#pragma once
+/// The study beyond the paper (issue 15): every tet calibration method against the FEM over Poisson's ratios from 0
+/// to 0.49, stretch / compress / shear, in the linear regime and at 12 % strain (against linear and StVK FEM), on
+/// the cylinder with a hole and the cone, with a figure of error against nu and a recommendation per nu.
+#include <filesystem>
+#include <hooke/experiments/figure.hpp>
+#include <string>
+#include <vector>
+
+namespace hooke::experiments {
+
+struct NuRangeOptions {
+  std::vector<double> poisson = {0.0, 0.1, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.49};  ///< nu values
+  std::vector<std::string> methods = {"lloyd-tet", "lloyd-tet-volume", "stiffness-fit", "stiffness-fit-volume",
+                                      "any-nu-tet"};            ///< tet methods
+  std::vector<std::string> meshes = {"cylinder_hole", "cone"};  ///< committed meshes (data/meshes/<name>.msh)
+  std::vector<std::string> loads = {"stretch", "compress", "shear"};
+  double small_strain = 0.001;  ///< the linear regime, default 0.1 %
+  double large_strain = 0.12;   ///< the papers' large deformation, default 12 % (0: skip both large regimes)
+};
+
+/// One comparison: a method at one nu on one mesh, load and regime.
+struct NuRangeRow {
+  std::string mesh, load;
+  std::string reference;  ///< "linear" or "stvk"
+  double strain = 0.0;    ///< mean linear-FEM strain of the load
+  double poisson = 0.0;
+  std::string method;
+  double relative_l2 = -1.0;  ///< |x_spring - x_fem| / |x_fem - X| over all nodes; -1 when a solve failed
+  std::string status;         ///< "converged" or the failing solve's status and message
+};
+
+struct NuRangeReport {
+  NuRangeOptions options;
+  std::vector<NuRangeRow> rows;
+  /// Per nu, the method with the smallest worst-case error over meshes, loads and regimes, with that error.
+  std::vector<std::string> recommendations;
+  std::vector<Figure> figures;  ///< error against nu per method, one figure per regime
+  double seconds = 0.0;
+};
+
+/// Runs the study (E = 14 630 Pa; experiments::compare for every row), logging each row at LogLevel::kInfo. About
+/// 20 minutes on one core with the defaults. @param mesh_dir  the committed meshes
+/// @throws IoError when a mesh is missing; InvalidArgument for an unknown method or load
+NuRangeReport reproduce_nu_range(const std::filesystem::path& mesh_dir, const NuRangeOptions& options = {});
+
+/// Writes `dir`/nu_range.json (every row), `dir`/nu_range.md (one table per mesh, load and regime: methods x nu; the
+/// recommendations) and the figure specs under `dir`/figures/.
+void write_nu_range_report(const std::filesystem::path& dir, const NuRangeReport& report);
+
+}  // namespace hooke::experiments

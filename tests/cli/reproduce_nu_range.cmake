@@ -1,0 +1,20 @@
+# hooke reproduce nu-range on a small grid (the cone, two methods, two nu, the linear regime): the report has a table
+# per load with a number in every cell and picks any-nu-tet at tissue nu, where lloyd-tet is worse on every load.
+file(REMOVE_RECURSE ${OUT})
+include(${CMAKE_CURRENT_LIST_DIR}/run_hooke.cmake)
+run_ok(nu_range reproduce nu-range --nu 0.25,0.45 --methods lloyd-tet,any-nu-tet --study-meshes cone --large-strain 0
+       --no-figures -o ${OUT})
+if(NOT out MATCHES "pick nu = 0.45: any-nu-tet, worst relative L2 0\\.[0-9]+ over 3 cases")
+  message(FATAL_ERROR "nu-range did not pick any-nu-tet at nu = 0.45")
+endif()
+file(READ ${OUT}/nu_range.md md)
+foreach(load stretch compress shear)
+  if(NOT md MATCHES "## cone, ${load}, 0.1 % strain, linear FEM\n\n[|] method [|] 0.25 [|] 0.45 [|]\n[|]---[|]---[|]---[|]\n[|] lloyd-tet [|] 0\\.[0-9]+ [|] 0\\.[0-9]+ [|]")
+    message(FATAL_ERROR "nu_range.md has no full ${load} table:\n${md}")
+  endif()
+endforeach()
+file(READ ${OUT}/nu_range.json json)
+string(JSON rows LENGTH "${json}" rows)
+if(NOT rows EQUAL 12 OR NOT EXISTS ${OUT}/figures/nu_range_linear_1.json)
+  message(FATAL_ERROR "nu_range.json has ${rows} rows (12 expected) or the figure spec is missing")
+endif()
