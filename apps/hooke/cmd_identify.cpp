@@ -28,9 +28,8 @@ struct IdentifyCli {
 
 identify::IdentifyOptions identify_options(const IdentifyCli& o, const mesh::Mesh& mesh) {
   identify::IdentifyOptions options;
-  options.parameters = o.params == "auto" ? (mesh.kind == mesh::ElementKind::kTet ? identify::Parameters::kSpringsVolume
-                                                                                  : identify::Parameters::kSprings)
-                                          : identify::parameters_from_name(o.params);
+  options.parameters =
+      o.params == "auto" ? experiments::default_parameters(mesh) : identify::parameters_from_name(o.params);
   options.objective = identify::objective_from_name(o.objective);
   options.regularization = o.regularization;
   options.stiffness_floor = o.stiffness_floor;
@@ -90,8 +89,7 @@ int run_identify(const IdentifyCli& o) {
                                     o.in.thickness};
   material::validate(material);
   const identify::IdentifyOptions options = identify_options(o, mesh);
-  const std::string analytic =
-      o.compare != "auto" ? o.compare : (mesh.kind == mesh::ElementKind::kTet ? "any-nu-tet" : "any-nu-triangle");
+  const std::string analytic = o.compare != "auto" ? o.compare : experiments::default_analytic_method(mesh);
   std::printf(
       "hooke identify: %s, %d nodes, %d %s elements, E %.6g Pa, nu %.4g, reference %s\n", mesh.source.c_str(),
       mesh.node_count(), mesh.element_count(), std::string(mesh::element_kind_name(mesh.kind)).c_str(),

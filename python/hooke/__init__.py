@@ -103,6 +103,35 @@ def reproduce(paper, out_dir, meshes=None):
     return json.loads((out / (paper + ".json")).read_text())
 
 
+def identify(mesh, material, params="auto", objective="forces", references=None, strain=0.01, held_out=4, seed=2007,
+             regularize=0.0, stiffness_floor=1e-3, iterations=30, compare="auto", density=1000.0):
+    """Identifies a spring model from reference deformations (Lloyd et al. 2007: Eq. 2 `objective="forces"`, Eq. 1
+    `objective="positions"`), as `hooke identify` does (docs/methods/identification.md).
+
+    mesh        hooke.Mesh (tets, or planar triangles with params="springs"), m
+    material    hooke.Material: E (Pa), nu, and the law of the FEM reference
+    params      "springs", "springs+volume", "springs+volume+rest-length" or "auto" (springs+volume on tets)
+    references  None: 12 load cases in every direction from hooke's FEM at `strain`, plus `held_out` random ones
+                kept out of the fit; or a list of dicts {"displacement": (N, dim) m, "force": (N, dim) N applied,
+                "fixed": (N,) 1.0 at supports, "held_out": bool, "name": str} (measured data)
+    regularize  weight of the penalty toward the mean stiffness; stiffness_floor: smallest k / mean k
+    iterations  Eq. 1 iterations at most; compare: the analytic model measured beside it ("auto": any-nu-tet)
+
+    Returns (model, report): a hooke.Model (method "identified", ready for hooke.Problem and write_model) and the
+    report as a dict (per case the identified and analytic relative L2 errors, RMS training and held-out errors,
+    the solver's iterations, the k range, times)."""
+    import json
+
+    if not isinstance(mesh, Mesh):
+        raise TypeError("identify: mesh must be a hooke.Mesh")
+    if not isinstance(material, Material):
+        raise TypeError("identify: material must be a hooke.Material")
+    model, report = _hooke._identify(mesh, material, params, objective, references, float(strain), int(held_out),
+                                     int(seed), float(regularize), float(stiffness_floor), int(iterations), compare,
+                                     float(density))
+    return model, json.loads(report)
+
+
 def mesh_from_meshio(m):
     """A hooke.Mesh from a meshio.Mesh (its first cell block of tetra, triangle or quad)."""
     kinds = {"tetra": "tet", "quad": "quad"}

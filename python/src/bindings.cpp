@@ -13,6 +13,7 @@ PYBIND11_MODULE(_hooke, m) {
   hooke::python::define_model(m);
   hooke::python::define_compare(m);
   hooke::python::define_reproduce(m);
+  hooke::python::define_identify(m);
   hooke::python::define_static_equilibrium(m);
   hooke::python::define_simulator(m);
   // The library's messages go to Python's logging ("hooke" logger; the package installs a NullHandler, so nothing

@@ -10,6 +10,7 @@ void define_material(pybind11::module_& m);
 void define_model(pybind11::module_& m);
 void define_compare(pybind11::module_& m);
 void define_reproduce(pybind11::module_& m);
+void define_identify(pybind11::module_& m);
 void define_static_equilibrium(pybind11::module_& m);
 void define_simulator(pybind11::module_& m);
 

@@ -303,6 +303,14 @@ IdentificationStudy identification_study(const mesh::Mesh& mesh, const material:
   return s;
 }
 
+identify::Parameters default_parameters(const mesh::Mesh& mesh) {
+  return mesh.kind == mesh::ElementKind::kTet ? identify::Parameters::kSpringsVolume : identify::Parameters::kSprings;
+}
+
+std::string default_analytic_method(const mesh::Mesh& mesh) {
+  return mesh.kind == mesh::ElementKind::kTet ? "any-nu-tet" : "any-nu-triangle";
+}
+
 calibrate::CalibratedModel identified_model(const mesh::Mesh& mesh, const material::Material& material, double density,
                                             const IdentificationStudy& study,
                                             const identify::IdentifyOptions& options) {

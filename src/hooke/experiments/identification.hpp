@@ -42,6 +42,12 @@ void write_reference(const std::filesystem::path& path, const mesh::Mesh& mesh,
 ///   is missing or has the wrong number of components
 identify::ReferenceCase read_reference(const std::filesystem::path& path, const mesh::Mesh& mesh);
 
+/// The defaults of `hooke identify` and hooke.identify on `mesh`: springs+volume on tets, springs on triangles.
+identify::Parameters default_parameters(const mesh::Mesh& mesh);
+/// The analytic model an identification is measured against (and starts Eq. 1 from): any-nu-tet on tets,
+/// any-nu-triangle on triangles.
+std::string default_analytic_method(const mesh::Mesh& mesh);
+
 /// What `hooke identify` reports.
 struct IdentificationStudy {
   identify::Identification identification;
