@@ -50,21 +50,33 @@ double traction_of(const mesh::Mesh& mesh, const std::vector<material::Material>
 
 }  // namespace
 
+std::vector<Comparison> compare_models(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
+                                       const std::vector<calibrate::SpringModel>& models,
+                                       const CompareOptions& options) {
+  const LoadCase load =
+      make_load_case(mesh, options.load, traction_of(mesh, materials, options), materials[0].thickness);
+  const solve::StaticResult fem = solve_fem(mesh, materials, options.reference, load);
+  std::vector<Comparison> out;
+  for (const auto& springs : models) {
+    Comparison c;
+    c.load = load;
+    const solve::StaticResult msm = solve_springs(mesh, springs, c.load);
+    c.springs = springs;
+    c.fem_mesh = mesh;
+    c.fem_positions = fem.positions;
+    c.fem_mesh_positions = fem.positions;
+    c.spring_positions = msm.positions;
+    c.fem_report = fem.report;
+    c.spring_report = msm.report;
+    measure(c, rest_of(mesh), mesh.dim());
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
 Comparison compare_model(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
                          const calibrate::SpringModel& springs, const CompareOptions& options) {
-  Comparison c;
-  c.load = make_load_case(mesh, options.load, traction_of(mesh, materials, options), materials[0].thickness);
-  const solve::StaticResult fem = solve_fem(mesh, materials, options.reference, c.load);
-  const solve::StaticResult msm = solve_springs(mesh, springs, c.load);
-  c.springs = springs;
-  c.fem_mesh = mesh;
-  c.fem_positions = fem.positions;
-  c.fem_mesh_positions = fem.positions;
-  c.spring_positions = msm.positions;
-  c.fem_report = fem.report;
-  c.spring_report = msm.report;
-  measure(c, rest_of(mesh), mesh.dim());
-  return c;
+  return std::move(compare_models(mesh, materials, {springs}, options).front());
 }
 
 Comparison compare(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,

@@ -5,6 +5,7 @@
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/experiments/load_case.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
+#include <vector>
 
 namespace hooke::experiments {
 
@@ -41,6 +42,11 @@ Comparison compare(const mesh::Mesh& mesh, const std::vector<material::Material>
 Comparison compare_model(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
                          const calibrate::SpringModel& springs, const CompareOptions& options);
 
+/// The same for several spring models on `mesh` under one load case: the FEM reference (and the traction for
+/// options.strain) is solved once. One Comparison per model, in order.
+std::vector<Comparison> compare_models(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
+                                       const std::vector<calibrate::SpringModel>& models,
+                                       const CompareOptions& options);
 /// A spring model on `coarse` against the FEM reference on `fine`, a finer mesh of the same object (Lloyd
 /// Sec. 5.4): both carry the same traction (from options.strain on the fine linear FEM, else
 /// options.traction_pa) on their own top boundaries; the FEM positions are interpolated at the coarse nodes.
