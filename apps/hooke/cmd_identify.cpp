@@ -79,6 +79,11 @@ void print_study(const experiments::IdentificationStudy& s, const identify::Iden
   std::printf("  RMS training %.4g (analytic %.4g), held out %.4g (analytic %.4g); evaluation %.3f s\n",
               s.training_error, s.analytic_training_error, s.held_out_error, s.analytic_held_out_error,
               s.evaluation_seconds);
+  if (options.objective == identify::Objective::kForces && s.training_error > s.analytic_training_error)
+    std::printf(
+        "  note      Eq. 2 matched the forces, but the positions are further from the reference than %s's; "
+        "--objective positions fits the positions (docs/methods/identification.md)\n",
+        s.analytic_method.c_str());
 }
 
 int run_identify(const IdentifyCli& o) {
