@@ -139,8 +139,8 @@ Action add_identify_command(CLI::App& app) {
   cmd->add_option("--objective", o->objective, "forces (Eq. 2) or positions (Eq. 1, from the Eq. 2 fit)")
       ->capture_default_str();
   cmd->add_option("--reference", o->reference,
-                  "fem (12 load cases in every direction from hooke's FEM), or reference VTU files with point data "
-                  "displacement, force and fixed")
+                  "fem (12 load cases in every direction from hooke's FEM), or reference files: VTU with point data "
+                  "displacement, force and fixed, or CSV with columns node,x,y,z,displacement_x..,force_x..,fixed")
       ->capture_default_str();
   cmd->add_option("--held-out-reference", o->held_out_reference, "Reference files kept out of the fit (with files)");
   cmd->add_option("--strain", o->loads.strain, "fem: largest displacement of each case / the body's extent")

@@ -88,6 +88,11 @@ TEST(ReferenceFiles, RoundTripAndRefuseAnotherMesh) {
   EXPECT_EQ(back.fixed_dofs, cases[2].fixed_dofs);
   EXPECT_EQ(back.name, "c.vtu");
   EXPECT_THROW(experiments::read_reference(dir / "c.vtu", mesh::tet_cylinder(0.01, 0.02, 4, 3)), InvalidArgument);
+  experiments::write_reference(dir / "c.csv", mesh, cases[2]);  // the same as a CSV table
+  const identify::ReferenceCase csv = experiments::read_reference(dir / "c.csv", mesh);
+  EXPECT_LT((csv.positions - cases[2].positions).norm(), 1e-10 * cases[2].positions.norm());
+  EXPECT_LT((csv.external_force - cases[2].external_force).norm(), 1e-10 * cases[2].external_force.norm());
+  EXPECT_EQ(csv.fixed_dofs, cases[2].fixed_dofs);
   io::write_vtu(dir / "bare.vtu", mesh);
   try {
     experiments::read_reference(dir / "bare.vtu", mesh);
