@@ -64,8 +64,12 @@ double PositionsObjective::value(const VecX& theta, VecX* gradient) {
   double sum = 0.0;
   for (std::size_t c = 0; c < m_cases.size(); ++c) {
     const ReferenceCase& ref = m_cases[c];
+    // With a gradient, the adjoint's Cholesky factorisation of H at the equilibrium tests its stability (a failed
+    // factorisation returns +infinity below), so the static solver's own stability test is skipped.
+    solve::StaticOptions statics = m_statics;
+    if (gradient) statics.check_stability = false;
     const solve::StaticResult result =
-        reference_equilibrium(model, ref, m_statics, m_equilibria[c].size() ? m_equilibria[c] : ref.positions);
+        reference_equilibrium(model, ref, statics, m_equilibria[c].size() ? m_equilibria[c] : ref.positions);
     ++m_solves;
     if (result.report.status != solve::SolveStatus::kConverged) return std::numeric_limits<double>::infinity();
     m_equilibria[c] = result.positions;
