@@ -95,7 +95,7 @@ TEST(ForceBasis, TransposeIsTheAdjointOfApplyOnTheMaskedRows) {
     if (!mask[k]) masked(static_cast<Eigen::Index>(k)) = 0.0;
   const identify::ForceBasis u(layout, x);
   VecX ut(layout.size()), ux(x.size());
-  u.apply_transpose(r, mask, ut);
+  u.apply_transpose(masked, ut);
   u.apply(theta, ux);
   EXPECT_NEAR(ut.dot(theta), ux.dot(masked), 1e-12 * std::abs(ux.dot(masked)));
   VecX norms = VecX::Zero(layout.size());

@@ -39,7 +39,7 @@ mesh::Mesh irregular_mesh(mesh::ElementKind kind, int cells, double fraction) {
   }
 }
 
-VecX flat_positions(const mesh::Mesh& m) { return Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size()); }
+VecX flat_positions(const mesh::Mesh& m) { return mesh::flat_positions(m); }
 
 Mat3 random_rotation(unsigned seed) {
   std::mt19937 rng(seed);

@@ -174,12 +174,12 @@ std::vector<identify::ReferenceCase> fem_reference_cases(const mesh::Mesh& mesh,
   for (int a = 0; a < d; ++a) ends.push_back(axis_ends(mesh, b, a));
   const std::vector<PendingCase> pending = pending_cases(mesh, b, ends, loads, material.thickness);
 
-  const VecX rest = Eigen::Map<const VecX>(RowMatX(mesh.nodes).data(), mesh.nodes.size());
+  const VecX rest = mesh::flat_positions(mesh);
   material::Material linear = material;
   linear.law = material::Law::kLinear;
   auto linear_model = std::make_shared<model::Model>(d, rest);
   linear_model->add(fem::make_elastic_block(mesh, linear));
-  const SparseMatrix k = linear_model->hessian(rest);
+  const SparseMatrix stiffness = linear_model->hessian(rest);
   std::shared_ptr<model::Model> nonlinear_model;
   if (material.law != material::Law::kLinear) {
     nonlinear_model = std::make_shared<model::Model>(d, rest);
@@ -189,11 +189,11 @@ std::vector<identify::ReferenceCase> fem_reference_cases(const mesh::Mesh& mesh,
   std::vector<identify::ReferenceCase> out;
   for (const AxisEnds& e : ends) {
     std::vector<int> free;
-    for (int k2 = 0; k2 < static_cast<int>(rest.size()); ++k2)
-      if (!e.fixed_dofs[static_cast<std::size_t>(k2)]) free.push_back(k2);
+    for (int dof = 0; dof < static_cast<int>(rest.size()); ++dof)
+      if (!e.fixed_dofs[static_cast<std::size_t>(dof)]) free.push_back(dof);
     const solve::detail::FreeMap map(free, static_cast<int>(rest.size()));
     solve::SparseCholesky cholesky;
-    if (!cholesky.factorize(map.restrict(k)))
+    if (!cholesky.factorize(map.restrict(stiffness)))
       throw SolverFailure("reference loads: the FEM stiffness with the " + std::string(1, kAxes[e.axis]) +
                           " supports is singular (is the mesh connected?)");
     for (const PendingCase& p : pending) {
@@ -223,7 +223,7 @@ std::vector<identify::ReferenceCase> fem_reference_cases(const mesh::Mesh& mesh,
 void write_reference(const std::filesystem::path& path, const mesh::Mesh& mesh,
                      const identify::ReferenceCase& reference) {
   const int d = mesh.dim();
-  const VecX rest = Eigen::Map<const VecX>(RowMatX(mesh.nodes).data(), mesh.nodes.size());
+  const VecX rest = mesh::flat_positions(mesh);
   identify::validate_reference(reference, rest.size());
   io::Field displacement{"displacement", d, reference.positions - rest};
   io::Field force{"force", d, reference.external_force};

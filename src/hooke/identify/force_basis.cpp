@@ -63,7 +63,7 @@ void spring_transpose(const ParameterLayout& layout, const RowMatX& stretch, con
   const int ns = layout.spring_count(), offsets = ns + layout.volume_count();
   for (int s = 0; s < ns; ++s) {
     const auto [i, j] = layout.pairs[s];
-    const V dr = r.segment<D>(D * j) - r.segment<D>(D * i);
+    const V dr = r.template segment<D>(D * j) - r.template segment<D>(D * i);
     theta_out(s) = stretch.row(s).template head<D>().dot(dr.transpose());
     if (layout.offset_count()) theta_out(offsets + s) = direction.row(s).template head<D>().dot(dr.transpose());
   }
@@ -77,20 +77,16 @@ double masked_norm(const std::vector<char>& mask, int offset, const double* colu
 }
 }  // namespace
 
-void ForceBasis::apply_transpose(const Eigen::Ref<const VecX>& r, const std::vector<char>& row_mask,
-                                 Eigen::Ref<VecX> theta_out) const {
+void ForceBasis::apply_transpose(const Eigen::Ref<const VecX>& r, Eigen::Ref<VecX> theta_out) const {
   const int ns = m_layout.spring_count(), nt = m_layout.volume_count();
-  VecX masked = r;  // rows outside the mask count as zero
-  for (Eigen::Index k = 0; k < masked.size(); ++k)
-    if (!row_mask[k]) masked(k) = 0.0;
   if (m_dim == 2)
-    spring_transpose<2>(m_layout, m_stretch, m_direction, masked, theta_out);
+    spring_transpose<2>(m_layout, m_stretch, m_direction, r, theta_out);
   else
-    spring_transpose<3>(m_layout, m_stretch, m_direction, masked, theta_out);
+    spring_transpose<3>(m_layout, m_stretch, m_direction, r, theta_out);
   for (int t = 0; t < nt; ++t) {
     double sum = 0.0;
     for (int a = 0; a < 4; ++a)
-      sum += m_volume.row(t).segment<3>(3 * a).dot(masked.segment<3>(3 * m_layout.tets(t, a)).transpose());
+      sum += m_volume.row(t).segment<3>(3 * a).dot(r.segment<3>(3 * m_layout.tets(t, a)).transpose());
     theta_out(ns + t) = sum;
   }
 }

@@ -14,9 +14,9 @@ class ForceBasis {
   ForceBasis(const ParameterLayout& layout, const Eigen::Ref<const VecX>& positions);
   /// forces = U theta, N (flat, dim x #V).
   void apply(const Eigen::Ref<const VecX>& theta, Eigen::Ref<VecX> forces) const;
-  /// theta_out = U^T r (layout.size()), with r flat over the nodes; rows where `mask` is 0 are skipped.
-  void apply_transpose(const Eigen::Ref<const VecX>& r, const std::vector<char>& row_mask,
-                       Eigen::Ref<VecX> theta_out) const;
+  /// theta_out = U^T r (layout.size()), with r flat over the nodes.
+  /// @pre r is zero on the rows that must not count (the supports' DOFs)
+  void apply_transpose(const Eigen::Ref<const VecX>& r, Eigen::Ref<VecX> theta_out) const;
   /// Adds |column|^2 over the rows where `row_mask` is 1 to `out` (layout.size()).
   void add_squared_column_norms(const std::vector<char>& row_mask, Eigen::Ref<VecX> out) const;
 

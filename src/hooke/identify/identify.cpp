@@ -26,6 +26,7 @@ class StackedForceOperator final : public LinearOperator {
       for (std::size_t k = 0; k < mask.size(); ++k) mask[k] = c->fixed_dofs[k] ? 0 : 1;
       m_masks.push_back(std::move(mask));
     }
+    m_scratch.assign(m_bases.size(), VecX(m_dofs));
   }
   Eigen::Index rows() const override { return m_dofs * static_cast<Eigen::Index>(m_bases.size()); }
   Eigen::Index cols() const override { return m_layout.size(); }
@@ -48,7 +49,9 @@ class StackedForceOperator final : public LinearOperator {
       VecX part(cols()), sum = VecX::Zero(cols());
 #pragma omp for schedule(dynamic)
       for (int c = 0; c < n; ++c) {
-        m_bases[c].apply_transpose(y.segment(c * m_dofs, m_dofs), m_masks[c], part);
+        VecX& masked = m_scratch[c];  // y with the supports' rows zeroed; one buffer per case, one thread per case
+        for (Eigen::Index k = 0; k < m_dofs; ++k) masked(k) = m_masks[c][k] ? y(c * m_dofs + k) : 0.0;
+        m_bases[c].apply_transpose(masked, part);
         sum += part;
       }
 #pragma omp critical
@@ -74,6 +77,7 @@ class StackedForceOperator final : public LinearOperator {
   Eigen::Index m_dofs;
   std::vector<ForceBasis> m_bases;
   std::vector<std::vector<char>> m_masks;
+  mutable std::vector<VecX> m_scratch;
 };
 
 // [A; W (theta_g - mean theta_g)]: Lloyd's penalty toward the mean stiffness (Sec. 2), per group of unknowns.
@@ -174,6 +178,17 @@ VecX fit_forces_with_floor(const ParameterLayout& layout, const std::vector<cons
   return theta;
 }
 
+// |f_ref - U theta| / |f_ref| over the free DOFs of `cases`.
+double relative_force_residual(const ParameterLayout& layout, const VecX& theta,
+                               const std::vector<const ReferenceCase*>& cases) {
+  const StackedForceOperator a(layout, cases);
+  const VecX b = a.right_hand_side(cases);
+  VecX r;
+  a.apply(theta, r);
+  const double scale = b.norm();
+  return scale > 0.0 ? (r - b).norm() / scale : (r - b).norm();
+}
+
 // Eq. 1 by spectral projected gradients (Birgin, Martinez & Raydan 2000) in variables relative to the start, with a
 // non-monotone Armijo search over the last 5 values.
 VecX fit_positions(const mesh::Mesh& mesh, const ParameterLayout& layout, const std::vector<ReferenceCase>& cases,
@@ -263,18 +278,13 @@ std::string_view objective_name(Objective objective) { return kObjectives.name(o
 double force_residual(const ParameterLayout& layout, const VecX& theta, const std::vector<ReferenceCase>& cases) {
   std::vector<const ReferenceCase*> all;
   for (const auto& c : cases) all.push_back(&c);
-  const StackedForceOperator a(layout, all);
-  const VecX b = a.right_hand_side(all);
-  VecX r;
-  a.apply(theta, r);
-  const double scale = b.norm();
-  return scale > 0.0 ? (r - b).norm() / scale : (r - b).norm();
+  return relative_force_residual(layout, theta, all);
 }
 
 Identification identify(const mesh::Mesh& mesh, const std::vector<ReferenceCase>& cases,
                         const IdentifyOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
-  const VecX rest_positions = Eigen::Map<const VecX>(RowMatX(mesh.nodes).data(), mesh.nodes.size());
+  const VecX rest_positions = mesh::flat_positions(mesh);
   for (const auto& c : cases) validate_reference(c, rest_positions.size());
   const ReferenceCase rest{"rest", rest_positions, VecX::Zero(rest_positions.size()),
                            std::vector<char>(rest_positions.size(), 0), false};
@@ -291,13 +301,11 @@ Identification identify(const mesh::Mesh& mesh, const std::vector<ReferenceCase>
     out.theta = fit_forces_with_floor(out.layout, training, options, out.report.least_squares);
   }
   out.report.converged = out.report.least_squares.converged;
-  std::vector<ReferenceCase> fitted_cases;
-  for (const ReferenceCase* c : training) fitted_cases.push_back(*c);
   if (options.objective == Objective::kPositions) {
     out.report.converged = false;
     out.theta = fit_positions(mesh, out.layout, cases, out.theta, options, out.report);
   }
-  out.report.force_residual = force_residual(out.layout, out.theta, fitted_cases);
+  out.report.force_residual = relative_force_residual(out.layout, out.theta, training);
   out.springs = spring_model(out.layout, out.theta);
   if (out.layout.spring_count()) {
     out.report.min_stiffness = out.springs.stiffness.minCoeff();

@@ -48,7 +48,7 @@ PositionsObjective::PositionsObjective(const mesh::Mesh& mesh, const ParameterLa
     : m_mesh(mesh), m_layout(layout), m_cases(std::move(cases)), m_statics(statics) {
   if (layout.offset_count())
     throw InvalidArgument("the positions objective takes fixed rest lengths (fit them with the forces objective)");
-  const VecX rest = Eigen::Map<const VecX>(RowMatX(mesh.nodes).data(), mesh.nodes.size());
+  const VecX rest = mesh::flat_positions(mesh);
   for (const auto& c : m_cases) {
     validate_reference(c, rest.size());
     m_reference += (c.positions - rest).squaredNorm();
@@ -84,14 +84,10 @@ double PositionsObjective::value(const VecX& theta, VecX* gradient) {
     if (!cholesky.factorize(free.restrict(model->hessian(result.positions))))
       return std::numeric_limits<double>::infinity();
     const VecX lambda_free = cholesky.solve(free.restrict(miss));
-    VecX lambda = VecX::Zero(model->dof_count());
-    std::vector<char> mask(lambda.size(), 0);
-    for (int i = 0; i < free.size(); ++i) {
-      lambda(free.free[i]) = lambda_free(i);
-      mask[free.free[i]] = 1;
-    }
+    VecX lambda = VecX::Zero(model->dof_count());  // zero on the supports: their rows do not count
+    for (int i = 0; i < free.size(); ++i) lambda(free.free[i]) = lambda_free(i);
     VecX part(m_layout.size());
-    ForceBasis(m_layout, result.positions).apply_transpose(lambda, mask, part);
+    ForceBasis(m_layout, result.positions).apply_transpose(lambda, part);
     *gradient -= 2.0 * part;
   }
   if (gradient) *gradient /= m_reference;

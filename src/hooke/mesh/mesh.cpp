@@ -40,6 +40,8 @@ std::string element_label(const Mesh& mesh, int element) {
   return label;
 }
 
+VecX flat_positions(const Mesh& mesh) { return Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size()); }
+
 RowMatX positions_as_rows(const VecX& flat, int dim) {
   return Eigen::Map<const RowMatX>(flat.data(), flat.size() / dim, dim);
 }

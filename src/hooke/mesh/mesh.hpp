@@ -58,4 +58,7 @@ std::string element_label(const Mesh& mesh, int element);
 /// @pre flat.size() is a multiple of dim
 RowMatX positions_as_rows(const VecX& flat, int dim);
 
+/// The mesh's node positions stored flat (x0 y0 [z0] x1 ..., m): the inverse of positions_as_rows.
+VecX flat_positions(const Mesh& mesh);
+
 }  // namespace hooke::mesh
