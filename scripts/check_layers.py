@@ -4,7 +4,7 @@ import pathlib
 import re
 import sys
 
-ORDER = ["core", "mesh", "io", "material", "model", "fem", "springs", "surface", "calibrate", "solve", "identify", "experiments"]
+ORDER = ["core", "mesh", "io", "material", "model", "fem", "springs", "surface", "calibrate", "solve", "identify", "experiments", "interactive"]
 # fem, springs and surface are siblings: none may include another.
 SIBLINGS = {"fem", "springs", "surface"}
 

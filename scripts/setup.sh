@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian package hooke needs. Idempotent: packages already present are skipped.
 # Usage: scripts/setup.sh [--meshing] [--bench]
-#   (default)  build, test and report dependencies
+#   (default)  build, test and report dependencies, and the viewer's (GLFW, Dear ImGui, stb, Xvfb)
 #   --meshing  also gmsh and tetgen, needed only to regenerate the committed meshes in data/meshes
 #   --bench    also Bullet, the benchmark peer of bench/
 set -euo pipefail
@@ -12,6 +12,7 @@ core=(
   libcli11-dev libfmt-dev libspdlog-dev nlohmann-json3-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib python3-meshio pybind11-dev
+  libglfw3-dev libimgui-dev libstb-dev xvfb xauth
 )
 extra=()
 for arg in "$@"; do

@@ -5,6 +5,9 @@
 #include <string>
 
 #include "commands.hpp"
+#ifdef HOOKE_HAVE_VIEWER
+#include "view_command.hpp"
+#endif
 
 int main(int argc, char** argv) {
   CLI::App app{"hooke: mass-spring models calibrated from E and nu, validated against FEM"};
@@ -18,6 +21,17 @@ int main(int argc, char** argv) {
   const hooke::cli::Action bench = hooke::cli::add_bench_command(app);
   const hooke::cli::Action calibrate = hooke::cli::add_calibrate_command(app);
   const hooke::cli::Action identify = hooke::cli::add_identify_command(app);
+  CLI::App* view_cmd =
+      app.add_subcommand("view", "Interactive viewer: grab the model with the mouse, change E and nu live");
+#ifdef HOOKE_HAVE_VIEWER
+  const hooke::cli::Action view = hooke::viewer::add_view_options(view_cmd);
+#else
+  view_cmd->allow_extras();
+  const hooke::cli::Action view = []() -> int {
+    throw hooke::InvalidArgument(
+        "this hooke was built without the viewer: install GLFW, OpenGL and Dear ImGui (scripts/setup.sh) and rebuild");
+  };
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -34,6 +48,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("bench")) return bench();
     if (app.got_subcommand("calibrate")) return calibrate();
     if (app.got_subcommand("identify")) return identify();
+    if (app.got_subcommand("view")) return view();
   } catch (const hooke::SolverFailure& e) {
     std::fprintf(stderr, "hooke: solver failure: %s\n", e.what());
     return 3;

@@ -1,0 +1,184 @@
+#include "panel.hpp"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <cstdio>
+#include <hooke/calibrate/model_factory.hpp>
+#include <hooke/interactive/picking.hpp>
+#include <string>
+#include <vector>
+
+namespace hooke::viewer {
+namespace {
+
+const solve::Integrator kIntegrators[] = {
+    solve::Integrator::kImplicitEuler,           solve::Integrator::kLocalGlobal,
+    solve::Integrator::kSymplecticEuler,         solve::Integrator::kVelocityVerlet,
+    solve::Integrator::kImplicitEulerLinearised, solve::Integrator::kQuasiStatic};
+
+// A combo box over names; returns true when the choice changed.
+bool combo(const char* label, std::string& current, const std::vector<std::string>& names) {
+  bool changed = false;
+  if (ImGui::BeginCombo(label, current.c_str())) {
+    for (const std::string& n : names)
+      if (ImGui::Selectable(n.c_str(), n == current)) {
+        changed = n != current;
+        current = n;
+      }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+void rates(const interactive::PhysicsStats& s, double draw_rate) {
+  ImGui::Text("physics %.0f steps/s (target %.0f), draw %.0f fps", s.achieved_rate, s.target_rate, draw_rate);
+  ImGui::Text("step %.3f ms median, %.3f ms p99; %ld steps, t = %.3f s", s.step_ms_median, s.step_ms_p99, s.steps,
+              s.sim_time);
+  if (s.behind)
+    ImGui::TextColored(ImVec4(0.85f, 0.1f, 0.1f, 1.0f),
+                       "behind real time: %.0f of %.0f steps/s (%ld steps longer than dt)", s.achieved_rate,
+                       s.target_rate, s.overruns);
+  if (s.paused) ImGui::TextColored(ImVec4(0.1f, 0.3f, 0.8f, 1.0f), "paused (Space)");
+  if (s.not_converged > 0) ImGui::Text("%d steps above the Newton tolerance", s.not_converged);
+  if (!s.error.empty()) ImGui::TextColored(ImVec4(0.85f, 0.1f, 0.1f, 1.0f), "%s", s.error.c_str());
+}
+
+void probe(ViewState& state, const interactive::Snapshot& snap) {
+  const double f = snap.probe_force.size() > 0 ? snap.probe_force.norm() : 0.0;
+  if (snap.grabbed.empty())
+    ImGui::Text("probe: left-drag on the surface to grab");
+  else
+    ImGui::Text("probe: %zu node(s), |F| = %.4g N, offset %.3g mm", snap.grabbed.size(), f,
+                1e3 * snap.probe_offset.norm());
+  std::vector<float> values;
+  for (const auto& [t, v] : state.force_history) values.push_back(v);
+  if (!values.empty())
+    ImGui::PlotLines("|F| (N), 5 s", values.data(), static_cast<int>(values.size()), 0, nullptr, 0.0f, FLT_MAX,
+                     ImVec2(0, 60));
+  float radius_mm = static_cast<float>(1e3 * state.grab_radius);
+  if (ImGui::SliderFloat("grab radius (mm)", &radius_mm, 0.0f, 20.0f)) state.grab_radius = 1e-3 * radius_mm;
+}
+
+}  // namespace
+
+PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, int node_count) {
+  PanelRequests r;
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("hooke");
+  ImGui::Text("%s model, %d nodes", snap.settings.method.c_str(), node_count);
+  rates(snap.stats, state.draw_rate);
+  ImGui::Separator();
+  probe(state, snap);
+  ImGui::Separator();
+
+  interactive::LiveSettings& e = state.edit;
+  float log_e = static_cast<float>(std::log10(e.material.youngs_modulus));
+  ImGui::SliderFloat("log10 E (Pa)", &log_e, 2.0f, 9.0f, "%.2f");
+  if (ImGui::IsItemEdited()) e.material.youngs_modulus = std::pow(10.0, static_cast<double>(log_e));
+  r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
+  ImGui::SameLine();
+  ImGui::Text("%.3g", e.material.youngs_modulus);
+  float nu = static_cast<float>(e.material.poisson_ratio);
+  ImGui::SliderFloat("Poisson nu", &nu, -0.2f, 0.499f, "%.3f");
+  if (ImGui::IsItemEdited()) e.material.poisson_ratio = nu;
+  r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
+  std::vector<std::string> methods = calibrate::model_method_names();
+  methods.insert(methods.begin(), "file");
+  r.apply_settings |= combo("method", e.method, methods);
+  std::string integrator(solve::integrator_name(e.integrator));
+  std::vector<std::string> integrators;
+  for (const solve::Integrator i : kIntegrators) integrators.emplace_back(solve::integrator_name(i));
+  if (combo("integrator", integrator, integrators)) {
+    e.integrator = solve::integrator_from_name(integrator);
+    r.apply_settings = true;
+  }
+  float dt_ms = static_cast<float>(1e3 * e.dt);
+  if (ImGui::InputFloat("dt (ms)", &dt_ms, 0.1f, 1.0f, "%.3f", ImGuiInputTextFlags_EnterReturnsTrue) && dt_ms > 0.0f) {
+    e.dt = 1e-3 * dt_ms;
+    r.apply_settings = true;
+  }
+  float alpha = static_cast<float>(e.damping_mass), beta = static_cast<float>(1e3 * e.damping_stiffness);
+  ImGui::SliderFloat("damping alpha (1/s)", &alpha, 0.0f, 50.0f);
+  if (ImGui::IsItemEdited()) e.damping_mass = alpha;
+  r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
+  ImGui::SliderFloat("damping beta (ms)", &beta, 0.0f, 10.0f);
+  if (ImGui::IsItemEdited()) e.damping_stiffness = 1e-3 * beta;
+  r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
+  r.apply_settings |= ImGui::Checkbox("gravity", &e.gravity);
+  ImGui::Separator();
+
+  std::string field = interactive::color_field_name(state.field);
+  if (combo("colour", field, {"none", "displacement", "error", "strain", "weights"}))
+    state.field = interactive::color_field_from_name(field);
+  std::string ghost = state.ghost == Ghost::kOff ? "off" : state.ghost == Ghost::kLinear ? "linear" : "stvk";
+  if (combo("FEM ghost", ghost, {"off", "linear", "stvk"})) {
+    state.ghost = ghost == "off" ? Ghost::kOff : ghost == "linear" ? Ghost::kLinear : Ghost::kStVK;
+    r.solve_ghost = state.ghost != Ghost::kOff;
+  }
+  if (state.ghost != Ghost::kOff) {
+    ImGui::SameLine();
+    r.solve_ghost |= ImGui::Button("solve");
+    if (!state.ghost_message.empty()) ImGui::TextWrapped("FEM: %s", state.ghost_message.c_str());
+    if (state.ghost_force.size() > 0) ImGui::Text("FEM holding force %.4g N", state.ghost_force.norm());
+  }
+  ImGui::Separator();
+  r.toggle_pause = ImGui::Button(state.paused ? "resume (Space)" : "pause (Space)");
+  ImGui::SameLine();
+  r.reset = ImGui::Button("reset (R)");
+  ImGui::TextDisabled("left-drag: grab  right-drag: orbit  middle-drag: pan  wheel: zoom");
+  ImGui::End();
+  return r;
+}
+
+void draw_overlays(const ViewState& state, const interactive::Snapshot& snap, const Camera& camera, int width,
+                   int height, int dim, double scene_size) {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  // The reaction force: an arrow from the grabbed nodes' driven position, a fifth of the scene per largest force seen.
+  if (!snap.grabbed.empty() && snap.probe_force.size() == dim) {
+    const Vec3 at =
+        interactive::positions_3d(snap.grab_positions.head(dim) + snap.probe_offset, dim).row(0).transpose();
+    float largest = 1e-12f;
+    for (const auto& [t, v] : state.force_history) largest = std::max(largest, v);
+    const Vec3 f = interactive::positions_3d(snap.probe_force, dim).row(0).transpose();
+    const Vec3 tip = at + (0.2 * scene_size / largest) * f;
+    Eigen::Vector2d a, b;
+    if (camera.project(at, width, height, a) && camera.project(tip, width, height, b)) {
+      const ImU32 red = IM_COL32(220, 30, 30, 255);
+      draw->AddLine(ImVec2(static_cast<float>(a(0)), static_cast<float>(a(1))),
+                    ImVec2(static_cast<float>(b(0)), static_cast<float>(b(1))), red, 3.0f);
+      const Eigen::Vector2d d = (b - a).norm() > 1e-9 ? Eigen::Vector2d((b - a).normalized()) : Eigen::Vector2d(0, -1);
+      const Eigen::Vector2d n(-d(1), d(0)), l = b - 12.0 * d + 6.0 * n, rr = b - 12.0 * d - 6.0 * n;
+      draw->AddTriangleFilled(ImVec2(static_cast<float>(b(0)), static_cast<float>(b(1))),
+                              ImVec2(static_cast<float>(l(0)), static_cast<float>(l(1))),
+                              ImVec2(static_cast<float>(rr(0)), static_cast<float>(rr(1))), red);
+      draw->AddCircleFilled(ImVec2(static_cast<float>(a(0)), static_cast<float>(a(1))), 4.0f, IM_COL32(0, 0, 0, 255));
+      char label[64];
+      std::snprintf(label, sizeof(label), "%.3g N", snap.probe_force.norm());
+      draw->AddText(ImVec2(static_cast<float>(b(0)) + 6.0f, static_cast<float>(b(1))), red, label);
+    }
+  }
+  // The colour bar: bottom right, 20 steps of the map, the range and the unit.
+  if (state.field != interactive::ColorField::kNone) {
+    const float x0 = static_cast<float>(width) - 60.0f, y0 = static_cast<float>(height) - 260.0f, h = 200.0f;
+    for (int k = 0; k < 20; ++k) {
+      const auto c0 = interactive::colormap(1.0 - k / 20.0), c1 = interactive::colormap(1.0 - (k + 1) / 20.0);
+      auto col = [](const std::array<float, 3>& c) {
+        return IM_COL32(static_cast<int>(255 * c[0]), static_cast<int>(255 * c[1]), static_cast<int>(255 * c[2]), 255);
+      };
+      draw->AddRectFilledMultiColor(ImVec2(x0, y0 + h * k / 20.0f), ImVec2(x0 + 20.0f, y0 + h * (k + 1) / 20.0f),
+                                    col(c0), col(c0), col(c1), col(c1));
+    }
+    const std::string unit = interactive::color_field_unit(state.field);
+    char hi[64], lo[64];
+    std::snprintf(hi, sizeof(hi), "%.3g %s", state.colour_hi, unit.c_str());
+    std::snprintf(lo, sizeof(lo), "%.3g %s", state.colour_lo, unit.c_str());
+    const ImU32 black = IM_COL32(0, 0, 0, 255);
+    draw->AddText(ImVec2(x0 - 40.0f, y0 - 36.0f), black, interactive::color_field_name(state.field).c_str());
+    draw->AddText(ImVec2(x0 - 40.0f, y0 - 18.0f), black, hi);
+    draw->AddText(ImVec2(x0 - 40.0f, y0 + h + 4.0f), black, lo);
+  }
+}
+
+}  // namespace hooke::viewer

@@ -1,0 +1,92 @@
+// hooke view (MESH --young PA --poisson NU --method NAME | --model MODEL.json) [--integrator ...] [--dt S]
+// [--script FILE] [--screenshot FILE.png] [--frames N] [--stats FILE.json] [--record DIR]
+#include "view_command.hpp"
+
+#include <commands.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/interactive/fields.hpp>
+#include <hooke/interactive/script.hpp>
+#include <memory>
+
+#include "viewer.hpp"
+
+namespace hooke::viewer {
+namespace {
+
+struct ViewCli {
+  cli::ModelSource in;
+  std::string integrator = "implicit-euler", script, colormap = "displacement";
+  interactive::LiveSettings settings;
+  ViewerOptions run;
+  bool fast = false;
+  std::vector<int> size{1024, 768};
+};
+
+int run_view(ViewCli o) {
+  // Everything is checked before a window opens: the model, the settings, the script, the colour map.
+  ViewerOptions v = o.run;
+  v.model = cli::load_model(o.in);
+  // A model file runs as it is ("file"); a calibration keeps its method's name, so the panel shows it.
+  v.settings.method = o.in.model_path.empty() ? v.model.method : "file";
+  v.settings.material = v.model.material;
+  v.settings.density = v.model.density;
+  if (v.model.method == "surface") v.settings.surface = cli::surface_options(o.in.surface);
+  v.settings.integrator = solve::integrator_from_name(o.integrator);
+  v.settings.dt = o.settings.dt;
+  v.settings.gravity = o.settings.gravity;
+  v.settings.damping_mass = o.settings.damping_mass;
+  v.settings.damping_stiffness = o.settings.damping_stiffness;
+  v.settings.local_global_iterations = o.settings.local_global_iterations;
+  v.settings.influence_radius = o.settings.influence_radius;
+  interactive::LiveSimulation check(v.model, v.settings);  // a model the integrator cannot run fails here
+  (void)check;
+  if (!o.script.empty()) v.script = interactive::read_script(o.script);
+  interactive::color_field_from_name(o.colormap);
+  v.colormap = o.colormap;
+  if (o.size.size() != 2 || o.size[0] < 64 || o.size[1] < 64 || o.size[0] > 8192 || o.size[1] > 8192)
+    throw InvalidArgument("--size takes WIDTH,HEIGHT in pixels, each in [64, 8192]");
+  v.width = o.size[0];
+  v.height = o.size[1];
+  v.realtime = !o.fast;
+  if (v.grab_radius < 0.0) throw InvalidArgument("--grab-radius must be >= 0 m");
+  if (v.frames < 0) throw InvalidArgument("--frames must be >= 0");
+  return run_viewer(v);
+}
+
+}  // namespace
+
+std::function<int()> add_view_options(CLI::App* cmd) {
+  auto o = std::make_shared<ViewCli>();
+  cli::add_model_source_options(cmd, o->in);
+  cmd->add_option("--law", o->in.law, "FEM law with --method fem: linear, stvk, neohookean")->capture_default_str();
+  cmd->add_option("--integrator", o->integrator,
+                  "implicit-euler, local-global, symplectic-euler, velocity-verlet, implicit-euler-linearised, "
+                  "quasi-static")
+      ->capture_default_str();
+  cmd->add_option("--iterations", o->settings.local_global_iterations, "local-global: iterations per step")
+      ->capture_default_str();
+  cmd->add_option("--dt", o->settings.dt, "Time step, s; the physics runs one step per dt of wall time")
+      ->capture_default_str();
+  cmd->add_flag("--gravity", o->settings.gravity, "Gravity 9.81 m/s^2 down the vertical axis");
+  cmd->add_option("--damping-mass", o->settings.damping_mass, "Rayleigh alpha, 1/s")->capture_default_str();
+  cmd->add_option("--damping-stiffness", o->settings.damping_stiffness, "Rayleigh beta, s")->capture_default_str();
+  cmd->add_option("--influence-radius", o->settings.influence_radius,
+                  "surface: radius of influence of the probe's Eq. 4 weights, m (default: half the bounding-box "
+                  "diagonal)");
+  cmd->add_option("--grab-radius", o->run.grab_radius, "Grab the surface nodes within this distance too, m")
+      ->capture_default_str();
+  cmd->add_option("--colormap", o->colormap, "none, displacement, error, strain, weights")->capture_default_str();
+  cmd->add_option("--script", o->script, "Timed interactions to replay (docs/viewer.md)");
+  cmd->add_option("--screenshot", o->run.screenshot, "Write the last frame as a PNG at exit");
+  cmd->add_option("--frames", o->run.frames, "Exit after this many drawn frames (0: when the window closes)");
+  cmd->add_option("--stats", o->run.stats, "Write the physics and draw rates and the probe force as JSON at exit");
+  cmd->add_option("--save-model", o->run.save_model,
+                  "Write the model being simulated at exit (.json, .vtu, .csv; what hooke calibrate writes)");
+  cmd->add_option("--record", o->run.record, "Write the drawn frames as a ParaView series into this folder");
+  cmd->add_option("--size", o->size, "Window size WIDTH,HEIGHT, pixels")->delimiter(',')->capture_default_str();
+  cmd->add_flag("--no-panel", o->run.no_panel, "Hide the panel (the scene alone, e.g. for pixel tests)");
+  cmd->add_flag("--fast", o->fast, "Step as fast as possible instead of one step per dt of wall time");
+  return [o] { return run_view(*o); };
+}
+
+}  // namespace hooke::viewer

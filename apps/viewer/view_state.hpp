@@ -1,0 +1,35 @@
+#pragma once
+// What the viewer's window shows and the panel edits (the drawing side's state; the physics has its own).
+#include <deque>
+#include <hooke/interactive/fields.hpp>
+#include <hooke/interactive/live_simulation.hpp>
+#include <optional>
+#include <string>
+
+namespace hooke::viewer {
+
+enum class Ghost { kOff, kLinear, kStVK };
+
+struct ViewState {
+  interactive::ColorField field = interactive::ColorField::kDisplacement;
+  Ghost ghost = Ghost::kOff;
+  std::optional<VecX> ghost_positions;  ///< the FEM static solution under the probe, flat, m
+  VecX ghost_force;                     ///< its holding force, N
+  std::string ghost_message;            ///< how the last ghost solve went
+  interactive::LiveSettings edit;       ///< what the panel edits; applied on release of a slider
+  double grab_radius = 0.0;             ///< nodes within this distance of the picked point are grabbed too, m
+  std::deque<std::pair<double, float>> force_history;  ///< (sim time, |F| in N) over the last 5 s
+  double draw_rate = 0.0;                              ///< frames per second of wall time
+  double colour_lo = 0.0, colour_hi = 1.0;             ///< the colour bar's range, in the field's unit
+  bool paused = false;
+};
+
+/// What the user asked for in the panel this frame.
+struct PanelRequests {
+  bool apply_settings = false;  ///< ViewState::edit changed: re-calibrate / rebuild
+  bool reset = false;
+  bool toggle_pause = false;
+  bool solve_ghost = false;
+};
+
+}  // namespace hooke::viewer

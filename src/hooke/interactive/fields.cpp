@@ -1,0 +1,112 @@
+#include <algorithm>
+#include <cmath>
+#include <hooke/core/error.hpp>
+#include <hooke/interactive/fields.hpp>
+#include <hooke/mesh/topology.hpp>
+#include <set>
+
+namespace hooke::interactive {
+
+SurfaceView surface_view(const mesh::Mesh& mesh) {
+  SurfaceView v;
+  switch (mesh.kind) {
+    case mesh::ElementKind::kTet: v.triangles = mesh::boundary_facets(mesh); break;
+    case mesh::ElementKind::kSurfaceTriangle:
+    case mesh::ElementKind::kTriangle: v.triangles = mesh.elements; break;
+    case mesh::ElementKind::kQuad:
+      v.triangles.resize(2 * mesh.element_count(), 3);
+      for (int e = 0; e < mesh.element_count(); ++e) {
+        const auto q = mesh.elements.row(e);
+        v.triangles.row(2 * e) << q(0), q(1), q(2);
+        v.triangles.row(2 * e + 1) << q(0), q(2), q(3);
+      }
+      break;
+  }
+  std::set<std::array<int, 2>> edges;
+  std::set<int> nodes;
+  for (Eigen::Index f = 0; f < v.triangles.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = v.triangles(f, k), b = v.triangles(f, (k + 1) % 3);
+      edges.insert({std::min(a, b), std::max(a, b)});
+      nodes.insert(a);
+    }
+  if (mesh.kind == mesh::ElementKind::kQuad) {  // the quads' sides, not the split diagonals
+    edges.clear();
+    for (const auto& e : mesh::unique_edges(mesh)) edges.insert(e);
+  }
+  v.edges.assign(edges.begin(), edges.end());
+  v.nodes.assign(nodes.begin(), nodes.end());
+  return v;
+}
+
+ColorField color_field_from_name(const std::string& name) {
+  for (const ColorField f :
+       {ColorField::kNone, ColorField::kDisplacement, ColorField::kError, ColorField::kStrain, ColorField::kWeights})
+    if (color_field_name(f) == name) return f;
+  throw InvalidArgument("unknown colour map '" + name + "' (none, displacement, error, strain, weights)");
+}
+
+std::string color_field_name(ColorField f) {
+  switch (f) {
+    case ColorField::kNone: return "none";
+    case ColorField::kDisplacement: return "displacement";
+    case ColorField::kError: return "error";
+    case ColorField::kStrain: return "strain";
+    case ColorField::kWeights: return "weights";
+  }
+  return "none";
+}
+
+std::string color_field_unit(ColorField f) {
+  switch (f) {
+    case ColorField::kDisplacement:
+    case ColorField::kError: return "m";
+    case ColorField::kStrain:
+    case ColorField::kWeights: return "1";
+    case ColorField::kNone: break;
+  }
+  return "";
+}
+
+VecX displacement_magnitude(const VecX& x, const VecX& rest, int dim) { return node_distance(x, rest, dim); }
+
+VecX node_distance(const VecX& x, const VecX& y, int dim) {
+  const Eigen::Index n = x.size() / dim;
+  VecX out(n);
+  for (Eigen::Index i = 0; i < n; ++i) out(i) = (x.segment(dim * i, dim) - y.segment(dim * i, dim)).norm();
+  return out;
+}
+
+VecX spring_strain(const calibrate::SpringModel& springs, const VecX& x, int node_count) {
+  const int d = springs.dim;
+  VecX sum = VecX::Zero(node_count), count = VecX::Zero(node_count);
+  for (size_t s = 0; s < springs.pairs.size(); ++s) {
+    const auto [i, j] = springs.pairs[s];
+    const double l0 = springs.rest_length(static_cast<Eigen::Index>(s));
+    const double strain = (x.segment(d * j, d) - x.segment(d * i, d)).norm() / l0 - 1.0;
+    sum(i) += strain;
+    sum(j) += strain;
+    count(i) += 1.0;
+    count(j) += 1.0;
+  }
+  for (int i = 0; i < node_count; ++i) sum(i) = count(i) > 0.0 ? sum(i) / count(i) : 0.0;
+  return sum;
+}
+
+VecX interaction_weights(const surface::VolumePenaltyBlock& penalty, const VecX& x,
+                         const model::Interaction* interaction) {
+  return penalty.weights(x, interaction);
+}
+
+std::array<float, 3> colormap(double t) {
+  // Three anchors, linear in between: dark blue, teal, yellow (lightness rises monotonically).
+  static constexpr float kAnchors[3][3] = {{0.18f, 0.10f, 0.42f}, {0.12f, 0.56f, 0.55f}, {0.98f, 0.90f, 0.15f}};
+  t = std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
+  const int k = t < 0.5 ? 0 : 1;
+  const float f = static_cast<float>(t < 0.5 ? 2.0 * t : 2.0 * t - 1.0);
+  return {kAnchors[k][0] + f * (kAnchors[k + 1][0] - kAnchors[k][0]),
+          kAnchors[k][1] + f * (kAnchors[k + 1][1] - kAnchors[k][1]),
+          kAnchors[k][2] + f * (kAnchors[k + 1][2] - kAnchors[k][2])};
+}
+
+}  // namespace hooke::interactive

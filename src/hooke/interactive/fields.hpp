@@ -1,0 +1,45 @@
+#pragma once
+/// What a viewer draws of a model: its outer surface, and per-node scalar fields for colour maps (displacement
+/// magnitude, distance to a reference solution, spring strain, the surface model's Eq. 4 weights).
+#include <array>
+#include <hooke/calibrate/calibrated_model.hpp>
+#include <hooke/model/interaction.hpp>
+#include <hooke/surface/volume_penalty_block.hpp>
+#include <string>
+#include <vector>
+
+namespace hooke::interactive {
+
+/// The triangles and edges to draw.
+struct SurfaceView {
+  RowMatXi triangles;  ///< #F x 3 node indices: boundary facets of a tet mesh (outward), the triangles of a surface
+                       ///< or planar mesh, planar quads split in two
+  std::vector<std::array<int, 2>> edges;  ///< unique edges of `triangles` (the wireframe)
+  std::vector<int> nodes;                 ///< nodes on the drawn surface, ascending
+};
+
+/// The surface of `mesh` to draw. @pre a validated mesh
+SurfaceView surface_view(const mesh::Mesh& mesh);
+
+enum class ColorField { kNone, kDisplacement, kError, kStrain, kWeights };
+ColorField color_field_from_name(
+    const std::string& name);  ///< none|displacement|error|strain|weights; @throws InvalidArgument
+std::string color_field_name(ColorField field);
+std::string color_field_unit(ColorField field);  ///< "m", "m", "1" (strain), "1" (weights), "" for none
+
+/// |x_i - X_i| per node, m. @pre x, rest flat of equal size, a multiple of dim
+VecX displacement_magnitude(const VecX& x, const VecX& rest, int dim);
+/// |x_i - y_i| per node, m (the distance to a reference solution y, e.g. the FEM's). @pre equal sizes
+VecX node_distance(const VecX& x, const VecX& y, int dim);
+/// Mean spring strain l / l0 - 1 per node over the springs at that node (0 where there are none): stretch > 0,
+/// compression < 0. @pre x flat, dim per node, springs on its nodes
+VecX spring_strain(const calibrate::SpringModel& springs, const VecX& x, int node_count);
+/// The surface model's Eq. 4 weights per node under `interaction` (all 1 without one).
+VecX interaction_weights(const surface::VolumePenaltyBlock& penalty, const VecX& x,
+                         const model::Interaction* interaction);
+
+/// A colour for value t in [0, 1] (clamped) on a perceptually ordered map (dark blue -> teal -> yellow), RGB in
+/// [0, 1]. Used by the viewer's surfaces and its colour bar alike.
+std::array<float, 3> colormap(double t);
+
+}  // namespace hooke::interactive

@@ -1,0 +1,292 @@
+#include <cmath>
+#include <hooke/core/error.hpp>
+#include <hooke/experiments/load_case.hpp>
+#include <hooke/interactive/live_simulation.hpp>
+#include <hooke/mesh/measure.hpp>
+#include <hooke/solve/static_equilibrium.hpp>
+#include <string>
+
+namespace hooke::interactive {
+namespace {
+
+void check_settings(const LiveSettings& s) {
+  if (!(s.dt > 0.0) || !std::isfinite(s.dt)) throw InvalidArgument("the time step dt must be a finite number > 0 s");
+  if (!(s.density > 0.0) || !std::isfinite(s.density)) throw InvalidArgument("the density must be > 0 kg/m^3");
+  if (!(s.damping_mass >= 0.0) || !(s.damping_stiffness >= 0.0) || !std::isfinite(s.damping_mass) ||
+      !std::isfinite(s.damping_stiffness))
+    throw InvalidArgument("the Rayleigh damping coefficients must be finite and >= 0");
+  if (s.local_global_iterations < 1) throw InvalidArgument("local-global needs at least 1 iteration per step");
+  if (!(s.influence_radius >= 0.0) || !std::isfinite(s.influence_radius))
+    throw InvalidArgument("the radius of influence must be finite and >= 0 m");
+}
+
+bool same_material(const material::Material& a, const material::Material& b) {
+  return a.law == b.law && a.youngs_modulus == b.youngs_modulus && a.poisson_ratio == b.poisson_ratio &&
+         a.plane == b.plane && a.thickness == b.thickness;
+}
+
+bool same_surface(const calibrate::SurfaceOptions& a, const calibrate::SurfaceOptions& b) {
+  return a.scheme == b.scheme && a.centre == b.centre && a.membrane_thickness == b.membrane_thickness &&
+         a.anchor_law == b.anchor_law && a.volume_penalty == b.volume_penalty && a.volume_force == b.volume_force &&
+         a.shear_factor == b.shear_factor;
+}
+
+calibrate::CalibratedModel calibrate_for(const mesh::Mesh& mesh, const LiveSettings& s) {
+  calibrate::ModelOptions o;
+  o.method = s.method;
+  o.density = s.density;
+  o.surface = s.surface;
+  return calibrate::calibrate_model(mesh, s.material, o);
+}
+
+// The holding force: sum over the grabbed nodes of -(dE/dx - f), N.
+VecX holding_force(const model::Problem& problem, const VecX& x, const std::vector<int>& grabbed) {
+  const int d = problem.model->dim();
+  const VecX g = problem.model->gradient(x, problem.interaction_or_null()) - problem.external_force;
+  VecX f = VecX::Zero(d);
+  for (const int node : grabbed) f -= g.segment(d * node, d);
+  return f;
+}
+
+}  // namespace
+
+struct LiveSimulation::Impl {
+  LiveSettings settings;
+  calibrate::CalibratedModel model;
+  calibrate::BuiltModel built;
+  std::vector<int> clamped;
+  std::optional<solve::Simulator> sim;
+  std::optional<model::Interaction> interaction;
+  solve::Probe probe;
+  VecX grab_positions, offset, force;
+
+  int dim() const { return model.mesh.dim(); }
+
+  // Builds the simulator for the current model and settings at state (x, v) and time 0; re-grabs the probe's nodes
+  // where they are, keeping their target.
+  void rebuild(const VecX& x, const VecX& v) {
+    const int d = dim();
+    model::Problem problem = model::make_problem(built.model);
+    clamped.clear();
+    if (!model.surface) {
+      clamped = experiments::make_load_case(model.mesh, experiments::LoadKind::kStretch, 0.0, model.material.thickness)
+                    .fixed_nodes;
+      model::fix_nodes(problem, clamped);
+    }
+    solve::Dynamics dyn{model.masses, VecX(), settings.damping_mass, settings.damping_stiffness};
+    if (settings.gravity) {
+      dyn.gravity = VecX::Zero(d);
+      dyn.gravity(d - 1) = -9.81;
+    }
+    solve::SimulatorOptions so;
+    so.integrator = settings.integrator;
+    so.local_global_iterations = settings.local_global_iterations;
+    solve::Simulator s(std::move(problem), std::move(dyn), so);
+    s.set_state(x, v);
+    sim.emplace(std::move(s));
+    if (!probe.nodes.empty()) {
+      // The driven nodes sit at grab position + offset: grab them there, with the offset from now on zero.
+      for (size_t k = 0; k < probe.nodes.size(); ++k)
+        grab_positions.segment(d * static_cast<Eigen::Index>(k), d) = x.segment(d * probe.nodes[k], d);
+      offset.setZero(d);
+      probe.offset = offset;
+      sim->set_probe(probe);
+      update_interaction();
+    }
+  }
+
+  // The surface model's Eq. 4 weights follow the probe: p_f at the first grabbed node, F_f along the drag.
+  void update_interaction() {
+    interaction.reset();
+    if (built.volume_penalty && !probe.nodes.empty()) {
+      const int d = dim();
+      const VecX total = grab_positions.segment(0, d) + offset - model.mesh.nodes.row(probe.nodes[0]).transpose();
+      if (total.norm() > 0.0) {
+        const double radius =
+            settings.influence_radius > 0.0 ? settings.influence_radius : 0.5 * mesh::bounding_box_diagonal(model.mesh);
+        interaction = model::Interaction{model.mesh.nodes.row(probe.nodes[0]).transpose(), Vec3(total), radius};
+      }
+    }
+    sim->problem().interaction = interaction;
+  }
+
+  void reset_state() {
+    probe = solve::Probe{};
+    grab_positions.resize(0);
+    offset.setZero(dim());
+    force.setZero(dim());
+    const VecX& rest = built.model->rest_positions();
+    rebuild(rest, VecX::Zero(rest.size()));
+    interaction.reset();
+    sim->problem().interaction.reset();
+  }
+};
+
+LiveSimulation::LiveSimulation(const mesh::Mesh& mesh, const LiveSettings& settings) : m(std::make_unique<Impl>()) {
+  check_settings(settings);
+  m->settings = settings;
+  m->model = calibrate_for(mesh, settings);
+  m->built = calibrate::build_model(m->model);
+  m->reset_state();
+}
+
+LiveSimulation::LiveSimulation(calibrate::CalibratedModel model, const LiveSettings& settings)
+    : m(std::make_unique<Impl>()) {
+  check_settings(settings);
+  // "file", or the model's own method with its own material and density, runs the model as it is.
+  const bool as_is = settings.method == "file" ||
+                     (settings.method == model.method && same_material(settings.material, model.material) &&
+                      settings.density == model.density);
+  if (!as_is) model = calibrate_for(model.mesh, settings);
+  m->settings = settings;
+  m->built = calibrate::build_model(model);
+  m->model = std::move(model);
+  m->reset_state();
+}
+
+LiveSimulation::~LiveSimulation() = default;
+LiveSimulation::LiveSimulation(LiveSimulation&&) noexcept = default;
+LiveSimulation& LiveSimulation::operator=(LiveSimulation&&) noexcept = default;
+
+void LiveSimulation::apply(const LiveSettings& s) {
+  check_settings(s);
+  const LiveSettings& old = m->settings;
+  const bool recalibrate = s.method != "file" && (s.method != old.method || !same_material(s.material, old.material) ||
+                                                  s.density != old.density || !same_surface(s.surface, old.surface));
+  // Build everything new first (strong guarantee), then swap.
+  std::optional<calibrate::CalibratedModel> model;
+  calibrate::BuiltModel built = m->built;
+  if (recalibrate) {
+    model = calibrate_for(m->model.mesh, s);
+    built = calibrate::build_model(*model);
+  }
+  const VecX x = m->sim->positions(), v = m->sim->velocities();
+  Impl next;
+  next.settings = s;
+  next.model = model ? std::move(*model) : m->model;
+  next.built = std::move(built);
+  next.probe = m->probe;
+  next.grab_positions = m->grab_positions;
+  next.offset = m->offset;
+  next.force = m->force;
+  next.rebuild(x, v);
+  *m = std::move(next);
+}
+
+const LiveSettings& LiveSimulation::settings() const { return m->settings; }
+
+solve::StepReport LiveSimulation::step() {
+  solve::StepReport r = m->sim->step(m->settings.dt);
+  if (!m->sim->positions().allFinite() || !m->sim->velocities().allFinite())
+    throw SolverFailure("the step at t = " + std::to_string(m->sim->time()) +
+                        " s produced non-finite positions: use a smaller dt or an implicit integrator");
+  if (!std::isfinite(m->sim->potential_energy()))
+    throw SolverFailure("the step at t = " + std::to_string(m->sim->time()) +
+                        " s inverted an element: use a smaller dt or an implicit integrator");
+  const int d = m->dim();
+  m->force = r.probe_force.size() == d ? VecX(r.probe_force) : VecX::Zero(d);
+  return r;
+}
+
+void LiveSimulation::reset() { m->reset_state(); }
+
+void LiveSimulation::grab(const std::vector<int>& nodes) {
+  const int d = m->dim(), n = m->model.mesh.node_count();
+  if (nodes.empty()) throw InvalidArgument("grab needs at least one node");
+  for (const int i : nodes)
+    if (i < 0 || i >= n)
+      throw InvalidArgument("node " + std::to_string(i) + " is not a node of the model (it has " + std::to_string(n) +
+                            ")");
+  m->probe.nodes = nodes;
+  m->probe.drive_position = true;
+  m->offset.setZero(d);
+  m->probe.offset = m->offset;
+  m->probe.force = VecX::Zero(d);
+  m->grab_positions.resize(d * static_cast<Eigen::Index>(nodes.size()));
+  for (size_t k = 0; k < nodes.size(); ++k)
+    m->grab_positions.segment(d * static_cast<Eigen::Index>(k), d) = m->sim->positions().segment(d * nodes[k], d);
+  m->sim->set_probe(m->probe);
+  m->update_interaction();
+}
+
+void LiveSimulation::drag(const VecX& offset) {
+  if (m->probe.nodes.empty()) return;
+  if (offset.size() != m->dim() || !offset.allFinite())
+    throw InvalidArgument("a drag needs " + std::to_string(m->dim()) + " finite components");
+  m->offset = offset;
+  m->probe.offset = offset;
+  m->sim->set_probe(m->probe);
+  m->update_interaction();
+}
+
+void LiveSimulation::release() {
+  m->probe = solve::Probe{};
+  m->grab_positions.resize(0);
+  m->offset.setZero(m->dim());
+  m->force.setZero(m->dim());
+  m->sim->set_probe(m->probe);
+  m->interaction.reset();
+  m->sim->problem().interaction.reset();
+}
+
+const std::vector<int>& LiveSimulation::grabbed() const { return m->probe.nodes; }
+const VecX& LiveSimulation::grab_positions() const { return m->grab_positions; }
+const VecX& LiveSimulation::probe_offset() const { return m->offset; }
+const VecX& LiveSimulation::probe_force() const { return m->force; }
+double LiveSimulation::time() const { return m->sim->time(); }
+const VecX& LiveSimulation::positions() const { return m->sim->positions(); }
+const VecX& LiveSimulation::velocities() const { return m->sim->velocities(); }
+const VecX& LiveSimulation::rest_positions() const { return m->built.model->rest_positions(); }
+const calibrate::CalibratedModel& LiveSimulation::model() const { return m->model; }
+const surface::VolumePenaltyBlock* LiveSimulation::volume_penalty() const { return m->built.volume_penalty; }
+const std::optional<model::Interaction>& LiveSimulation::interaction() const { return m->interaction; }
+const std::vector<int>& LiveSimulation::clamped_nodes() const { return m->clamped; }
+double LiveSimulation::kinetic_energy() const { return m->sim->kinetic_energy(); }
+double LiveSimulation::stable_time_step() const { return m->sim->stable_time_step(); }
+
+ProbeEquilibrium probe_equilibrium(const calibrate::CalibratedModel& cm, const std::vector<int>& clamped,
+                                   const std::vector<int>& grabbed, const VecX& targets, bool gravity) {
+  const int d = cm.mesh.dim(), n = cm.mesh.node_count();
+  if (targets.size() != d * static_cast<Eigen::Index>(grabbed.size()) || !targets.allFinite())
+    throw InvalidArgument("probe_equilibrium needs " + std::to_string(d) + " finite coordinates per grabbed node");
+  for (const std::vector<int>* list : {&clamped, &grabbed})
+    for (const int i : *list)
+      if (i < 0 || i >= n) throw InvalidArgument("node " + std::to_string(i) + " is not a node of the model");
+  const calibrate::BuiltModel built = calibrate::build_model(cm);
+  model::Problem problem = model::make_problem(built.model);
+  model::fix_nodes(problem, clamped);
+  model::fix_nodes(problem, grabbed);
+  problem.prescribed_positions = built.model->rest_positions();
+  for (size_t k = 0; k < grabbed.size(); ++k)
+    problem.prescribed_positions.segment(d * grabbed[k], d) = targets.segment(d * static_cast<Eigen::Index>(k), d);
+  problem.external_force = VecX::Zero(built.model->dof_count());
+  if (gravity)
+    for (int i = 0; i < n; ++i) problem.external_force(d * i + d - 1) = -9.81 * cm.masses(d * i + d - 1);
+  for (size_t i = 0; i < problem.fixed_dofs.size(); ++i)
+    if (problem.fixed_dofs[i]) problem.external_force(static_cast<Eigen::Index>(i)) = 0.0;
+  // The prescribed displacement is applied at once; the linear solution is a start close enough that Newton does
+  // not begin from a state with the grabbed nodes torn out of their elements.
+  solve::StaticOptions options;
+  const solve::StaticResult linear = solve::linear_static(problem);
+  if (linear.report.status == solve::SolveStatus::kConverged) options.start = linear.positions;
+  const solve::StaticResult r = solve::static_equilibrium(problem, options);
+  if (r.report.status != solve::SolveStatus::kConverged)
+    throw SolverFailure("the static equilibrium under the probe did not converge: " + r.report.message);
+  return ProbeEquilibrium{r.positions, holding_force(problem, r.positions, grabbed), r.report.message};
+}
+
+ProbeEquilibrium fem_probe_equilibrium(const calibrate::CalibratedModel& cm, material::Law law,
+                                       const std::vector<int>& clamped, const std::vector<int>& grabbed,
+                                       const VecX& targets, bool gravity) {
+  if (cm.mesh.kind == mesh::ElementKind::kSurfaceTriangle)
+    throw InvalidArgument("there is no FEM reference for a surface mesh: it needs tets (or a planar mesh)");
+  material::Material mat = cm.material;
+  mat.law = law;
+  calibrate::ModelOptions o;
+  o.method = "fem";
+  o.density = cm.density;
+  const calibrate::CalibratedModel fem = calibrate::calibrate_model(cm.mesh, mat, o);
+  return probe_equilibrium(fem, clamped, grabbed, targets, gravity);
+}
+
+}  // namespace hooke::interactive

@@ -1,0 +1,120 @@
+#pragma once
+/// A simulation a user drives while it runs (the viewer's physics, and any haptic loop): a model from the one model
+/// factory or a model file, the bottom clamped (spring and FEM models) or held by its anchors (surface model), a probe
+/// that grabs nodes and drives them like a stiff haptic device, and settings (material, method, integrator, dt,
+/// damping, gravity) that can change between steps without losing the current deformation.
+///
+/// Not thread-safe: one thread owns it (interactive::PhysicsLoop runs it in its own thread).
+#include <hooke/calibrate/calibrated_model.hpp>
+#include <hooke/calibrate/model_factory.hpp>
+#include <hooke/solve/simulator.hpp>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hooke::interactive {
+
+/// What a user can change while the simulation runs.
+struct LiveSettings {
+  /// Model factory name (calibrate::model_method_names()); "file" keeps the model the simulation was made from.
+  std::string method = "lloyd-tet";
+  material::Material material;        ///< E (Pa), nu, thickness (2D); the law matters for "fem" only
+  double density = 1000.0;            ///< kg/m^3 (> 0)
+  calibrate::SurfaceOptions surface;  ///< "surface" only: scheme, anchor law, volume penalty
+  solve::Integrator integrator = solve::Integrator::kImplicitEuler;
+  int local_global_iterations = 10;  ///< local-global: iterations per step
+  double dt = 1e-3;                  ///< time step, s (> 0): 1 kHz by default, a haptic loop's rate
+  bool gravity = false;              ///< 9.81 m/s^2 down the vertical axis (y in 2D, z in 3D)
+  double damping_mass = 0.0;         ///< Rayleigh alpha, 1/s (>= 0)
+  double damping_stiffness = 0.0;    ///< Rayleigh beta, s (>= 0)
+  double influence_radius = 0.0;     ///< surface model: r of Eq. 4, m (0: half the bounding-box diagonal)
+};
+
+/// A static equilibrium under the probe's current displacement (what the viewer's FEM ghost shows).
+struct ProbeEquilibrium {
+  VecX positions;       ///< flat, m, in the model's node order
+  VecX holding_force;   ///< force the body exerts on the grabbed nodes, N (dim; zero without a probe)
+  std::string message;  ///< the static solver's outcome
+};
+
+class LiveSimulation {
+ public:
+  /// Calibrates settings.method on `mesh` (validated, m) for settings.material.
+  /// @throws what calibrate::calibrate_model throws, InvalidArgument for settings out of range
+  LiveSimulation(const mesh::Mesh& mesh, const LiveSettings& settings);
+  /// Runs `model` (a model file's contents, or a calibration): as it is when settings.method is "file", or names
+  /// model.method with model.material and model.density; otherwise recalibrates on model.mesh.
+  /// @throws InvalidArgument when the model is invalid or the settings out of range
+  LiveSimulation(calibrate::CalibratedModel model, const LiveSettings& settings);
+  ~LiveSimulation();
+  LiveSimulation(LiveSimulation&&) noexcept;
+  LiveSimulation& operator=(LiveSimulation&&) noexcept;
+
+  /// Applies new settings: a new method, material, density or surface option re-calibrates the model; a new
+  /// integrator, damping or gravity rebuilds the integrator. The current positions and velocities are kept (the
+  /// deformation is not lost) and the probe keeps its nodes and target. Strong guarantee: when calibration fails
+  /// (e.g. a method that does not apply to the mesh) nothing changes.
+  /// @throws what calibrate::calibrate_model throws, InvalidArgument for settings out of range
+  void apply(const LiveSettings& settings);
+  const LiveSettings& settings() const;
+
+  /// Advances one step of settings().dt.
+  /// @throws SolverFailure when the step inverts an element or produces non-finite positions (the state is then
+  ///   unusable: call reset)
+  solve::StepReport step();
+  /// Back to rest, at rest, time 0, probe released.
+  void reset();
+
+  /// Grabs `nodes` (model numbering, in range, non-empty) at their current positions; the probe then drives them
+  /// to their grab positions plus the offset given to drag (a stiff haptic device). The surface model's Eq. 4
+  /// weights follow the probe.
+  /// @throws InvalidArgument for an empty list or a node out of range
+  void grab(const std::vector<int>& nodes);
+  /// Sets the probe's displacement from the grab positions, m (size dim; finite). No effect without a grab.
+  void drag(const VecX& offset);
+  /// Lets go of the grabbed nodes.
+  void release();
+  const std::vector<int>& grabbed() const;  ///< grabbed nodes, model numbering (empty when released)
+  /// Where the grabbed nodes were grabbed, flat, m (dim per grabbed node).
+  const VecX& grab_positions() const;
+  const VecX& probe_offset() const;  ///< m (dim; zero without a grab)
+  /// The force the body exerts on the probe after the last step, N (dim; zero without a grab): minus the force
+  /// that holds the grabbed nodes where the probe puts them (solve::StepReport::probe_force).
+  const VecX& probe_force() const;
+
+  double time() const;                              ///< simulated time, s
+  const VecX& positions() const;                    ///< flat, m, model numbering
+  const VecX& velocities() const;                   ///< flat, m/s
+  const VecX& rest_positions() const;               ///< flat, m
+  const calibrate::CalibratedModel& model() const;  ///< the model being simulated
+  /// The surface model's volume penalty (null for other models): Eq. 4 weights for drawing.
+  const surface::VolumePenaltyBlock* volume_penalty() const;
+  /// The surface model's current interaction (the probe's point and direction), if any.
+  const std::optional<model::Interaction>& interaction() const;
+  /// Nodes clamped at the bottom (empty for the surface model), model numbering.
+  const std::vector<int>& clamped_nodes() const;
+  double kinetic_energy() const;    ///< J
+  double stable_time_step() const;  ///< explicit stability limit of the current model, s
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m;
+};
+
+/// The static equilibrium of `model` with the `clamped` nodes at rest, the `grabbed` nodes held at `targets` (flat,
+/// m, dim per grabbed node) and gravity when asked: positions and the holding force (what a probe holding them
+/// feels: minus the force that keeps them there), by solve::static_equilibrium (Newton with load stepping).
+/// @throws InvalidArgument for nodes out of range or targets of the wrong size; SolverFailure when the solve does not
+///   converge to a stable equilibrium
+ProbeEquilibrium probe_equilibrium(const calibrate::CalibratedModel& model, const std::vector<int>& clamped,
+                                   const std::vector<int>& grabbed, const VecX& targets, bool gravity);
+
+/// The same under the FEM of model.mesh with model.material and `law` (the viewer's ghost): the reference the springs
+/// are compared with. Needs a volume (tets) or planar (triangles, quads) mesh.
+/// @throws InvalidArgument for a surface mesh; what probe_equilibrium throws
+ProbeEquilibrium fem_probe_equilibrium(const calibrate::CalibratedModel& model, material::Law law,
+                                       const std::vector<int>& clamped, const std::vector<int>& grabbed,
+                                       const VecX& targets, bool gravity);
+
+}  // namespace hooke::interactive

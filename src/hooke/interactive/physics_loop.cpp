@@ -1,0 +1,335 @@
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <hooke/core/atomic_file.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/experiments/simulation.hpp>
+#include <hooke/interactive/physics_loop.hpp>
+#include <nlohmann/json.hpp>
+
+namespace hooke::interactive {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double parse_number(const std::string& key, const std::string& value) {
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+  if (ec != std::errc() || end != value.data() + value.size() || !std::isfinite(v))
+    throw InvalidArgument("set " + key + ": '" + value + "' is not a finite number");
+  return v;
+}
+
+// Wall times of the last steps (a ring of 1 000) and when they ended, for the rate and the percentiles.
+struct StepClock {
+  static constexpr size_t kWindow = 1000;
+  std::vector<double> ms = std::vector<double>(kWindow, 0.0);
+  std::deque<Clock::time_point> ends;  // step ends within the last second
+  size_t count = 0;
+
+  void add(double step_ms, Clock::time_point end) {
+    ms[count % kWindow] = step_ms;
+    ++count;
+    ends.push_back(end);
+    while (!ends.empty() && end - ends.front() > std::chrono::seconds(1)) ends.pop_front();
+  }
+  std::vector<double> window() const {
+    return std::vector<double>(ms.begin(), ms.begin() + static_cast<long>(std::min(count, kWindow)));
+  }
+};
+
+}  // namespace
+
+void apply_setting(LiveSettings& s, const std::string& key, const std::string& value) {
+  if (key == "young") {
+    s.material.youngs_modulus = parse_number(key, value);
+  } else if (key == "poisson") {
+    s.material.poisson_ratio = parse_number(key, value);
+  } else if (key == "density") {
+    s.density = parse_number(key, value);
+  } else if (key == "method") {
+    s.method = value;
+  } else if (key == "integrator") {
+    s.integrator = solve::integrator_from_name(value);
+  } else if (key == "dt") {
+    s.dt = parse_number(key, value);
+  } else if (key == "damping-mass") {
+    s.damping_mass = parse_number(key, value);
+  } else if (key == "damping-stiffness") {
+    s.damping_stiffness = parse_number(key, value);
+  } else if (key == "gravity") {
+    if (value != "on" && value != "off") throw InvalidArgument("set gravity takes on or off, not '" + value + "'");
+    s.gravity = value == "on";
+  } else {
+    throw InvalidArgument("unknown setting '" + key + "'");
+  }
+}
+
+PhysicsLoop::PhysicsLoop(LiveSimulation simulation, bool realtime)
+    : m_sim(std::move(simulation)), m_realtime(realtime) {
+  m_stats.target_rate = 1.0 / m_sim.settings().dt;
+  publish(true);
+}
+
+PhysicsLoop::~PhysicsLoop() { stop(); }
+
+void PhysicsLoop::start() {
+  if (!m_thread.joinable()) m_thread = std::thread([this] { run(); });
+}
+
+void PhysicsLoop::stop() {
+  {
+    std::lock_guard lock(m_mutex);
+    m_stop = true;
+    m_waiting_for_drawing = false;
+  }
+  m_wake.notify_all();
+  if (m_thread.joinable()) m_thread.join();
+}
+
+void PhysicsLoop::post(std::function<void(LiveSimulation&)> command) {
+  std::lock_guard lock(m_mutex);
+  m_commands.push_back(std::move(command));
+}
+
+void PhysicsLoop::with(const std::function<void(const LiveSimulation&)>& command) {
+  ++m_waiters;
+  std::lock_guard lock(m_mutex);  // the physics thread holds this lock while it steps
+  --m_waiters;
+  command(m_sim);
+}
+
+bool PhysicsLoop::snapshot(Snapshot& out) const {
+  ++m_waiters;
+  std::lock_guard lock(m_mutex);
+  --m_waiters;
+  if (out.version == m_latest.version) return false;
+  out = m_latest;
+  return true;
+}
+
+PhysicsStats PhysicsLoop::stats() const {
+  std::lock_guard lock(m_mutex);
+  return m_stats;
+}
+
+void PhysicsLoop::set_paused(bool paused) {
+  std::lock_guard lock(m_mutex);
+  m_paused = paused;
+  m_stats.paused = paused;
+}
+
+bool PhysicsLoop::paused() const {
+  std::lock_guard lock(m_mutex);
+  return m_paused;
+}
+
+void PhysicsLoop::set_script(std::vector<ScriptCommand> script, DrawingHandler drawing) {
+  std::lock_guard lock(m_mutex);
+  m_script = std::move(script);
+  m_script_next = 0;
+  m_drawing = std::move(drawing);
+}
+
+void PhysicsLoop::drawing_done() {
+  {
+    std::lock_guard lock(m_mutex);
+    m_waiting_for_drawing = false;
+  }
+  m_wake.notify_all();
+}
+
+bool PhysicsLoop::script_finished() const {
+  std::lock_guard lock(m_mutex);
+  return m_script_next >= m_script.size() && !m_waiting_for_drawing;
+}
+
+// Under m_mutex.
+void PhysicsLoop::publish(bool model_changed) {
+  if (model_changed) ++m_model_version;
+  Snapshot& s = m_latest;
+  ++s.version;
+  s.positions = m_sim.positions();
+  s.probe_force = m_sim.probe_force();
+  s.grabbed = m_sim.grabbed();
+  s.grab_positions = m_sim.grab_positions();
+  s.probe_offset = m_sim.probe_offset();
+  s.interaction = m_sim.interaction();
+  s.settings = m_sim.settings();
+  s.model_version = m_model_version;
+  m_stats.sim_time = m_sim.time();
+  s.stats = m_stats;
+}
+
+// Under m_mutex: the script's commands whose time has come. Drawing commands stop here until drawing_done().
+void PhysicsLoop::run_script_commands() {
+  const int d = m_sim.model().mesh.dim();
+  while (m_script_next < m_script.size() && !m_waiting_for_drawing &&
+         m_script[m_script_next].time <= m_sim.time() + 1e-9 * m_sim.settings().dt) {
+    const ScriptCommand& c = m_script[m_script_next++];
+    try {
+      switch (c.action) {
+        case ScriptAction::kGrab: m_sim.grab(c.nodes); break;
+        case ScriptAction::kGrabNearest: {
+          const RowMatX x = mesh::positions_as_rows(m_sim.positions(), d);
+          Eigen::Index best = 0;
+          (x.rowwise() - c.vector.head(d).transpose()).rowwise().squaredNorm().minCoeff(&best);
+          m_sim.grab({static_cast<int>(best)});
+          break;
+        }
+        case ScriptAction::kDrag:
+          m_drag_from = m_sim.probe_offset();
+          m_drag_to = c.vector.head(d);
+          m_drag_t0 = m_sim.time();
+          m_drag_t1 = m_drag_t0 + c.duration;
+          if (c.duration <= 0.0) {
+            m_sim.drag(m_drag_to);
+            m_drag_t1 = -1.0;
+          }
+          break;
+        case ScriptAction::kRelease:
+          m_drag_t1 = -1.0;
+          m_sim.release();
+          break;
+        case ScriptAction::kSet: {
+          LiveSettings s = m_sim.settings();
+          apply_setting(s, c.key, c.value);
+          m_sim.apply(s);
+          m_stats.target_rate = 1.0 / s.dt;
+          publish(true);
+          break;
+        }
+        case ScriptAction::kReset:
+          m_drag_t1 = -1.0;
+          m_sim.reset();
+          break;
+        case ScriptAction::kPause: m_paused = m_stats.paused = true; break;
+        case ScriptAction::kResume: m_paused = m_stats.paused = false; break;
+        default:  // drawing: the front end, with the state of this time
+          publish(false);
+          m_waiting_for_drawing = m_drawing != nullptr;
+          if (m_drawing) m_drawing(c);  // the handler must not call back into the loop: it queues the command
+          break;
+      }
+    } catch (const Error& e) {
+      m_stats.error = "script line " + std::to_string(c.line) + ": " + e.what();
+    }
+  }
+}
+
+void PhysicsLoop::run() {
+  StepClock clock;
+  const Clock::time_point start = Clock::now();
+  Clock::time_point next = start;
+  double paused_seconds = 0.0;
+  std::unique_lock lock(m_mutex);
+  while (!m_stop) {
+    // Commands from the front end, then the script's.
+    bool model_changed = false;
+    while (!m_commands.empty()) {
+      auto command = std::move(m_commands.front());
+      m_commands.pop_front();
+      try {
+        const LiveSettings old = m_sim.settings();
+        command(m_sim);
+        const LiveSettings& now = m_sim.settings();
+        model_changed = model_changed || now.method != old.method ||
+                        now.material.youngs_modulus != old.material.youngs_modulus ||
+                        now.material.poisson_ratio != old.material.poisson_ratio || now.density != old.density;
+        m_stats.target_rate = 1.0 / now.dt;
+      } catch (const Error& e) {
+        m_stats.error = e.what();
+      }
+    }
+    run_script_commands();
+    if (m_waiting_for_drawing) {  // the front end draws this state; wait for it
+      publish(model_changed);
+      const Clock::time_point t0 = Clock::now();
+      m_wake.wait(lock, [this] { return m_stop || !m_waiting_for_drawing; });
+      paused_seconds += std::chrono::duration<double>(Clock::now() - t0).count();  // not the physics' time
+      clock.ends.clear();
+      next = Clock::now();
+      continue;
+    }
+    if (m_paused) {
+      publish(model_changed);
+      const Clock::time_point t0 = Clock::now();
+      m_wake.wait_for(lock, std::chrono::milliseconds(5));
+      paused_seconds += std::chrono::duration<double>(Clock::now() - t0).count();
+      clock.ends.clear();
+      next = Clock::now();
+      continue;
+    }
+    // A scripted drag ramps linearly in simulated time.
+    if (m_drag_t1 >= 0.0 && !m_sim.grabbed().empty()) {
+      const double f =
+          m_drag_t1 > m_drag_t0 ? std::clamp((m_sim.time() - m_drag_t0) / (m_drag_t1 - m_drag_t0), 0.0, 1.0) : 1.0;
+      m_sim.drag(m_drag_from + f * (m_drag_to - m_drag_from));
+      if (f >= 1.0) m_drag_t1 = -1.0;
+    }
+    const Clock::time_point t0 = Clock::now();
+    try {
+      const solve::StepReport r = m_sim.step();
+      m_stats.iterations += r.iterations;
+      m_stats.not_converged += r.converged ? 0 : 1;
+    } catch (const Error& e) {
+      m_stats.error = std::string(e.what()) + " (the simulation was reset)";
+      m_sim.reset();
+      model_changed = true;
+    }
+    const Clock::time_point t1 = Clock::now();
+    const double step_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
+    const double period = m_sim.settings().dt;
+    clock.add(step_ms, t1);
+    ++m_stats.steps;
+    if (step_ms > 1e3 * period) ++m_stats.overruns;
+    m_stats.wall_time = std::chrono::duration<double>(t1 - start).count() - paused_seconds;
+    // Steps over the last second of wall time (over the time since the last pause while that is shorter).
+    const double window = std::min(1.0, std::chrono::duration<double>(t1 - clock.ends.front()).count() + period);
+    m_stats.achieved_rate = static_cast<double>(clock.ends.size()) / window;
+    m_stats.behind = m_realtime && m_stats.wall_time > 1.0 && m_stats.achieved_rate < 0.95 / period;
+    if (clock.count % 100 == 1 || clock.count < 100) {  // percentiles now and then: sorting 1 000 values costs ~20 us
+      const std::vector<double> w = clock.window();
+      m_stats.step_ms_median = experiments::quantile(w, 0.5);
+      m_stats.step_ms_p99 = experiments::quantile(w, 0.99);
+    }
+    publish(model_changed);
+    if (m_realtime) {
+      // One step per period of wall time. Behind by more than 50 periods: drop the backlog (the panel says we are
+      // behind) rather than running flat out to catch up.
+      next += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(period));
+      if (Clock::now() - next > std::chrono::duration<double>(50 * period)) next = Clock::now();
+      lock.unlock();
+      std::this_thread::sleep_until(next);
+      while (m_waiters.load() > 0) std::this_thread::yield();  // behind: sleep_until did not let them in
+      lock.lock();
+    } else {
+      lock.unlock();  // let the front end take the state
+      while (m_waiters.load() > 0) std::this_thread::yield();
+      lock.lock();
+    }
+  }
+}
+
+void write_stats(const std::string& path, const PhysicsStats& s,
+                 const std::vector<std::pair<std::string, double>>& extra) {
+  nlohmann::ordered_json j;
+  j["target_rate_hz"] = s.target_rate;
+  j["achieved_rate_hz"] = s.achieved_rate;
+  j["steps_per_wall_second"] = s.wall_time > 0.0 ? static_cast<double>(s.steps) / s.wall_time : 0.0;
+  j["step_ms_median"] = s.step_ms_median;
+  j["step_ms_p99"] = s.step_ms_p99;
+  j["steps"] = s.steps;
+  j["overruns"] = s.overruns;
+  j["behind"] = s.behind;
+  j["sim_time_s"] = s.sim_time;
+  j["wall_time_s"] = s.wall_time;
+  j["iterations"] = s.iterations;
+  j["not_converged"] = s.not_converged;
+  j["error"] = s.error;
+  for (const auto& [key, value] : extra) j[key] = std::isfinite(value) ? nlohmann::ordered_json(value) : nullptr;
+  write_file_atomically(path, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+}
+
+}  // namespace hooke::interactive

@@ -1,0 +1,133 @@
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <hooke/core/error.hpp>
+#include <hooke/interactive/script.hpp>
+#include <sstream>
+
+namespace hooke::interactive {
+namespace {
+
+struct LineParser {
+  const std::string& source;
+  int line;
+  std::vector<std::string> words;
+  size_t next = 0;
+
+  [[noreturn]] void fail(const std::string& what) const { throw ParseError(source, line, what); }
+
+  const std::string& word(const char* what) {
+    if (next >= words.size()) fail(std::string("missing ") + what);
+    return words[next++];
+  }
+  double number(const char* what) {
+    const std::string& w = word(what);
+    double v = 0.0;
+    const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
+    if (ec != std::errc() || end != w.data() + w.size() || !std::isfinite(v))
+      fail(std::string("'") + w + "' is not a finite number (" + what + ")");
+    return v;
+  }
+  int integer(const char* what) {
+    const std::string& w = word(what);
+    int v = 0;
+    const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
+    if (ec != std::errc() || end != w.data() + w.size() || v < 0)
+      fail(std::string("'") + w + "' is not a node number (" + what + ")");
+    return v;
+  }
+  void done() const {
+    if (next < words.size()) fail("unexpected '" + words[next] + "'");
+  }
+};
+
+const char* const kSetKeys[] = {"young", "poisson",      "density",           "method", "integrator",
+                                "dt",    "damping-mass", "damping-stiffness", "gravity"};
+
+}  // namespace
+
+bool is_drawing(ScriptAction a) {
+  return a == ScriptAction::kColormap || a == ScriptAction::kGhost || a == ScriptAction::kScreenshot ||
+         a == ScriptAction::kQuit;
+}
+
+std::vector<ScriptCommand> parse_script(const std::string& text, const std::string& source) {
+  std::vector<ScriptCommand> out;
+  std::istringstream in(text);
+  std::string raw;
+  int line = 0;
+  double last = 0.0;
+  while (std::getline(in, raw)) {
+    ++line;
+    if (const size_t hash = raw.find('#'); hash != std::string::npos) raw.resize(hash);
+    LineParser p{source, line, {}, 0};
+    std::istringstream words(raw);
+    for (std::string w; words >> w;) p.words.push_back(w);
+    if (p.words.empty()) continue;
+    ScriptCommand c;
+    c.line = line;
+    c.time = p.number("time, s");
+    if (c.time < 0.0) p.fail("the time must be >= 0 s");
+    if (c.time < last)
+      p.fail("the times must not decrease (" + std::to_string(c.time) + " s after " + std::to_string(last) + " s)");
+    last = c.time;
+    const std::string verb = p.word("command");
+    if (verb == "grab") {
+      c.action = ScriptAction::kGrab;
+      c.nodes.push_back(p.integer("node"));
+      while (p.next < p.words.size()) c.nodes.push_back(p.integer("node"));
+    } else if (verb == "grab-nearest") {
+      c.action = ScriptAction::kGrabNearest;
+      for (int a = 0; a < 3; ++a) c.vector(a) = p.number("coordinate, m");
+    } else if (verb == "drag") {
+      c.action = ScriptAction::kDrag;
+      for (int a = 0; a < 3; ++a) c.vector(a) = p.number("offset, m");
+      if (p.next < p.words.size()) {
+        if (p.word("'over'") != "over") p.fail("expected 'over SECONDS' after the offset");
+        c.duration = p.number("ramp time, s");
+        if (c.duration < 0.0) p.fail("the ramp time must be >= 0 s");
+      }
+    } else if (verb == "release" || verb == "reset" || verb == "pause" || verb == "resume" || verb == "quit") {
+      c.action = verb == "release"  ? ScriptAction::kRelease
+                 : verb == "reset"  ? ScriptAction::kReset
+                 : verb == "pause"  ? ScriptAction::kPause
+                 : verb == "resume" ? ScriptAction::kResume
+                                    : ScriptAction::kQuit;
+    } else if (verb == "set") {
+      c.action = ScriptAction::kSet;
+      c.key = p.word("setting");
+      bool known = false;
+      for (const char* k : kSetKeys) known = known || c.key == k;
+      if (!known) p.fail("unknown setting '" + c.key + "'");
+      c.value = p.word("value");
+    } else if (verb == "colormap") {
+      c.action = ScriptAction::kColormap;
+      c.key = p.word("colour map");
+      if (c.key != "none" && c.key != "displacement" && c.key != "error" && c.key != "strain" && c.key != "weights")
+        p.fail("unknown colour map '" + c.key + "' (none, displacement, error, strain, weights)");
+    } else if (verb == "ghost") {
+      c.action = ScriptAction::kGhost;
+      c.key = p.word("off, linear or stvk");
+      if (c.key != "off" && c.key != "linear" && c.key != "stvk") p.fail("ghost takes off, linear or stvk");
+    } else if (verb == "screenshot") {
+      c.action = ScriptAction::kScreenshot;
+      c.key = p.word("file");
+    } else {
+      p.fail("unknown command '" + verb + "'");
+    }
+    p.done();
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::vector<ScriptCommand> read_script(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw IoError("cannot read the script " + path);
+  std::stringstream buffer;
+  buffer << f.rdbuf();
+  if (f.bad()) throw IoError("cannot read the script " + path);
+  return parse_script(buffer.str(), path);
+}
+
+}  // namespace hooke::interactive
