@@ -84,7 +84,8 @@ std::function<int()> add_view_options(CLI::App* cmd) {
                   "Write the model being simulated at exit (.json, .vtu, .csv; what hooke calibrate writes)");
   cmd->add_option("--record", o->run.record, "Write the drawn frames as a ParaView series into this folder");
   cmd->add_option("--size", o->size, "Window size WIDTH,HEIGHT, pixels")->delimiter(',')->capture_default_str();
-  cmd->add_flag("--no-panel", o->run.no_panel, "Hide the panel (the scene alone, e.g. for pixel tests)");
+  cmd->add_flag("--no-panel", o->run.no_panel,
+                "The scene alone: no panel, force arrow or colour bar (e.g. for pixel tests)");
   cmd->add_flag("--fast", o->fast, "Step as fast as possible instead of one step per dt of wall time");
   return [o] { return run_view(*o); };
 }

@@ -284,10 +284,12 @@ class Viewer {
         hi = value.maxCoeff();
         break;
       case interactive::ColorField::kError:
-        // Relative to the largest displacement: uniform (the lowest colour) where the model is the FEM.
+        // Up to the largest error, but at least 1 % of the largest displacement: where the model is the FEM the
+        // map is uniform (the lowest colour), not its round-off stretched over the whole range.
         if (m_state.ghost_positions && m_state.ghost_positions->size() == m_snap.positions.size())
           value = interactive::node_distance(m_snap.positions, *m_state.ghost_positions, m_dim);
-        hi = interactive::displacement_magnitude(m_snap.positions, m_rest, m_dim).maxCoeff();
+        hi = std::max(value.maxCoeff(),
+                      0.01 * interactive::displacement_magnitude(m_snap.positions, m_rest, m_dim).maxCoeff());
         break;
       case interactive::ColorField::kStrain: {
         if (m_springs_version != m_snap.model_version) {  // the springs change only with the model
@@ -351,7 +353,7 @@ class Viewer {
     if (r.reset) m_loop.post([](interactive::LiveSimulation& sim) { sim.reset(); });
     if (r.toggle_pause) toggle_pause();
     if (r.solve_ghost) solve_ghost(false);
-    draw_overlays(m_state, m_snap, m_camera, m_width, m_height, m_dim, m_scene_size);
+    if (!m_options.no_panel) draw_overlays(m_state, m_snap, m_camera, m_width, m_height, m_dim, m_scene_size);
     ImGui::Render();
 
     m_renderer.clear(m_width, m_height);
