@@ -94,6 +94,16 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
     e.integrator = solve::integrator_from_name(integrator);
     r.apply_settings = true;
   }
+  if (e.integrator == solve::Integrator::kLocalGlobal) {
+    std::string global(e.global_solve == solve::GlobalSolve::kDirect ? "direct" : "chebyshev");
+    if (combo("global solve", global, {"direct", "chebyshev"})) {
+      e.global_solve = solve::global_solve_from_name(global);
+      r.apply_settings = true;
+    }
+    int iterations = e.local_global_iterations;
+    if (ImGui::SliderInt("iterations", &iterations, 1, 30)) e.local_global_iterations = iterations;
+    r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
+  }
   float dt_ms = static_cast<float>(1e3 * e.dt);
   if (ImGui::InputFloat("dt (ms)", &dt_ms, 0.1f, 1.0f, "%.3f", ImGuiInputTextFlags_EnterReturnsTrue) && dt_ms > 0.0f) {
     e.dt = 1e-3 * dt_ms;

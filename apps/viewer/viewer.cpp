@@ -81,7 +81,7 @@ class Viewer {
         m_dim(o.model.mesh.dim()),
         m_view(interactive::surface_view(o.model.mesh)),
         m_renderer(m_view.triangles, m_view.edges),
-        m_loop(interactive::LiveSimulation(o.model, o.settings), o.realtime) {
+        m_loop(interactive::LiveSimulation(o.model, o.settings), o.realtime, o.threads) {
     m_state.field = interactive::color_field_from_name(o.colormap);
     m_state.grab_radius = o.grab_radius;
     m_loop.with([&](const interactive::LiveSimulation& sim) {

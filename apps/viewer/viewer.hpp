@@ -22,6 +22,7 @@ struct ViewerOptions {
   std::string colormap = "displacement";           ///< initial colour map
   double grab_radius = 0.0;                        ///< m
   bool no_panel = false;                           ///< hide the panel (overlays stay)
+  int threads = 1;                                 ///< OpenMP threads of the physics (>= 1)
   bool realtime = true;                            ///< physics at one step per dt of wall time (else as fast as it can)
 };
 

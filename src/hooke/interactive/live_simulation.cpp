@@ -81,6 +81,7 @@ struct LiveSimulation::Impl {
     solve::SimulatorOptions so;
     so.integrator = settings.integrator;
     so.local_global_iterations = settings.local_global_iterations;
+    so.global_solve = settings.global_solve;
     solve::Simulator s(std::move(problem), std::move(dyn), so);
     s.set_state(x, v);
     sim.emplace(std::move(s));

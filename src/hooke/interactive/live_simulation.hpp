@@ -23,12 +23,13 @@ struct LiveSettings {
   double density = 1000.0;            ///< kg/m^3 (> 0)
   calibrate::SurfaceOptions surface;  ///< "surface" only: scheme, anchor law, volume penalty
   solve::Integrator integrator = solve::Integrator::kImplicitEuler;
-  int local_global_iterations = 10;  ///< local-global: iterations per step
-  double dt = 1e-3;                  ///< time step, s (> 0): 1 kHz by default, a haptic loop's rate
-  bool gravity = false;              ///< 9.81 m/s^2 down the vertical axis (y in 2D, z in 3D)
-  double damping_mass = 0.0;         ///< Rayleigh alpha, 1/s (>= 0)
-  double damping_stiffness = 0.0;    ///< Rayleigh beta, s (>= 0)
-  double influence_radius = 0.0;     ///< surface model: r of Eq. 4, m (0: half the bounding-box diagonal)
+  int local_global_iterations = 10;                               ///< local-global: iterations per step
+  solve::GlobalSolve global_solve = solve::GlobalSolve::kDirect;  ///< local-global: the global step's solver
+  double dt = 1e-3;                ///< time step, s (> 0): 1 kHz by default, a haptic loop's rate
+  bool gravity = false;            ///< 9.81 m/s^2 down the vertical axis (y in 2D, z in 3D)
+  double damping_mass = 0.0;       ///< Rayleigh alpha, 1/s (>= 0)
+  double damping_stiffness = 0.0;  ///< Rayleigh beta, s (>= 0)
+  double influence_radius = 0.0;   ///< surface model: r of Eq. 4, m (0: half the bounding-box diagonal)
 };
 
 /// A static equilibrium under the probe's current displacement (what the viewer's FEM ghost shows).

@@ -1,3 +1,4 @@
+#include <omp.h>
 #include <algorithm>
 #include <charconv>
 #include <chrono>
@@ -66,8 +67,8 @@ void apply_setting(LiveSettings& s, const std::string& key, const std::string& v
   }
 }
 
-PhysicsLoop::PhysicsLoop(LiveSimulation simulation, bool realtime)
-    : m_sim(std::move(simulation)), m_realtime(realtime) {
+PhysicsLoop::PhysicsLoop(LiveSimulation simulation, bool realtime, int threads)
+    : m_sim(std::move(simulation)), m_realtime(realtime), m_threads(std::max(threads, 1)) {
   m_stats.target_rate = 1.0 / m_sim.settings().dt;
   publish(true);
 }
@@ -219,6 +220,7 @@ void PhysicsLoop::run_script_commands() {
 }
 
 void PhysicsLoop::run() {
+  omp_set_num_threads(m_threads);  // this thread's parallel regions
   StepClock clock;
   const Clock::time_point start = Clock::now();
   Clock::time_point next = start;
