@@ -49,9 +49,10 @@ Mat4f Camera::view() const {
   return v;
 }
 
-Mat4f Camera::projection(double aspect) const {
-  const double t = 1.0 / std::tan(0.5 * m_fov);
+Mat4f Camera::projection(int width, int height) const {
+  const double aspect = static_cast<double>(width) / std::max(height, 1), t = 1.0 / std::tan(0.5 * m_fov);
   Mat4f p = Mat4f::Zero();
+  p(0, 2) = static_cast<float>(-2.0 * m_shift / std::max(width, 1));  // x_ndc += shift after the divide by w = -z
   p(0, 0) = static_cast<float>(t / aspect);
   p(1, 1) = static_cast<float>(t);
   p(2, 2) = static_cast<float>(-(m_far + m_near) / (m_far - m_near));
@@ -62,14 +63,14 @@ Mat4f Camera::projection(double aspect) const {
 
 Ray Camera::ray(double x, double y, int width, int height) const {
   const double aspect = static_cast<double>(width) / std::max(height, 1), t = std::tan(0.5 * m_fov);
-  const double nx = (2.0 * x / width - 1.0) * t * aspect, ny = (1.0 - 2.0 * y / height) * t;
+  const double nx = (2.0 * (x - m_shift) / width - 1.0) * t * aspect, ny = (1.0 - 2.0 * y / height) * t;
   const Eigen::Vector3d f = forward(), s = f.cross(Eigen::Vector3d::UnitZ()).normalized(), u = s.cross(f);
   return Ray{eye(), (f + nx * s + ny * u).normalized()};
 }
 
 bool Camera::project(const Eigen::Vector3d& p, int width, int height, Eigen::Vector2d& pixel) const {
   const Eigen::Vector4f c =
-      projection(static_cast<double>(width) / std::max(height, 1)) * view() *
+      projection(width, height) * view() *
       Eigen::Vector4f(static_cast<float>(p(0)), static_cast<float>(p(1)), static_cast<float>(p(2)), 1.0f);
   if (c(3) <= 0.0f) return false;
   pixel = Eigen::Vector2d((c(0) / c(3) * 0.5 + 0.5) * width, (0.5 - c(1) / c(3) * 0.5) * height);

@@ -18,9 +18,12 @@ class Camera {
   void orbit(double dx_pixels, double dy_pixels);
   void pan(double dx_pixels, double dy_pixels, int height_pixels);
   void zoom(double wheel_steps);
+  /// Moves the image right by `pixels` (the scene centred in what a panel on the left leaves free).
+  void set_shift(double pixels) { m_shift = pixels; }
 
   Mat4f view() const;
-  Mat4f projection(double aspect) const;
+  /// Perspective projection of a viewport `width` pixels wide with aspect width / height.
+  Mat4f projection(int width, int height) const;
   Eigen::Vector3d eye() const;
   Eigen::Vector3d forward() const;  ///< unit, from the eye to the target
   /// The ray through pixel (x, y) (origin top left) of a width x height viewport.
@@ -31,7 +34,7 @@ class Camera {
  private:
   Eigen::Vector3d m_target = Eigen::Vector3d::Zero();
   double m_distance = 1.0, m_yaw = -1.5707963267948966, m_pitch = 0.35, m_fov = 0.7853981633974483;
-  double m_near = 1e-3, m_far = 1e3;
+  double m_near = 1e-3, m_far = 1e3, m_shift = 0.0;
 };
 
 }  // namespace hooke::viewer

@@ -65,7 +65,7 @@ void probe(ViewState& state, const interactive::Snapshot& snap) {
 PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, int node_count) {
   PanelRequests r;
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0), ImGuiCond_FirstUseEver);
   ImGui::Begin("hooke");
   ImGui::Text("%s model, %d nodes", snap.settings.method.c_str(), node_count);
   rates(snap.stats, state.draw_rate);

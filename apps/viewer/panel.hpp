@@ -8,6 +8,8 @@
 
 namespace hooke::viewer {
 
+inline constexpr float kPanelWidth = 440.0f;  ///< pixels, at the left edge
+
 /// Draws the panel for `snapshot` and returns what the user changed. `state.edit` is edited in place.
 PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snapshot, int node_count);
 

@@ -91,6 +91,7 @@ class Viewer {
     const RowMatX rest = interactive::positions_3d(m_rest, m_dim);
     m_scene_size = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm();
     m_camera.fit(rest.colwise().minCoeff().transpose(), rest.colwise().maxCoeff().transpose());
+    m_camera.set_shift(o.no_panel ? 0.0 : 0.5 * kPanelWidth);  // centred in what the panel leaves free
     if (!o.script.empty())
       m_loop.set_script(o.script, [this](const interactive::ScriptCommand& c) {
         std::lock_guard lock(m_drawing.mutex);
@@ -357,8 +358,7 @@ class Viewer {
     ImGui::Render();
 
     m_renderer.clear(m_width, m_height);
-    const Mat4f view = m_camera.view(),
-                projection = m_camera.projection(static_cast<double>(m_width) / std::max(m_height, 1));
+    const Mat4f view = m_camera.view(), projection = m_camera.projection(m_width, m_height);
     m_renderer.draw_surface(interactive::positions_3d(m_snap.positions, m_dim), colours(), view, projection);
     if (m_state.ghost != Ghost::kOff && m_state.ghost_positions)
       m_renderer.draw_wireframe(interactive::positions_3d(*m_state.ghost_positions, m_dim), {0.1f, 0.1f, 0.1f}, view,
