@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <hooke/calibrate/model_factory.hpp>
+#include <hooke/calibrate/surface_model.hpp>
 #include <hooke/interactive/picking.hpp>
 #include <string>
 #include <vector>
@@ -87,6 +88,15 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
   std::vector<std::string> methods = calibrate::model_method_names();
   methods.insert(methods.begin(), "file");
   r.apply_settings |= combo("method", e.method, methods);
+  if (e.method == "surface") {  // Arnab & Raja's distribution schemes (their Sec. Experimental Findings)
+    std::string scheme(calibrate::surface_scheme_name(e.surface.scheme));
+    if (combo("scheme", scheme, {"A", "B", "C", "D"})) {
+      e.surface.scheme = calibrate::surface_scheme_from_name(scheme);
+      e.surface.anchor_law.reset();  // the scheme's own anchor law and volume penalty
+      e.surface.volume_penalty.reset();
+      r.apply_settings = true;
+    }
+  }
   std::string integrator(solve::integrator_name(e.integrator));
   std::vector<std::string> integrators;
   for (const solve::Integrator i : kIntegrators) integrators.emplace_back(solve::integrator_name(i));
@@ -180,7 +190,8 @@ void draw_overlays(const ViewState& state, const interactive::Snapshot& snap, co
       draw->AddRectFilledMultiColor(ImVec2(x0, y0 + h * k / 20.0f), ImVec2(x0 + 20.0f, y0 + h * (k + 1) / 20.0f),
                                     col(c0), col(c0), col(c1), col(c1));
     }
-    const std::string unit = interactive::color_field_unit(state.field);
+    std::string unit = interactive::color_field_unit(state.field);
+    if (unit == "1") unit.clear();  // dimensionless: the number alone
     char hi[64], lo[64];
     std::snprintf(hi, sizeof(hi), "%.3g %s", state.colour_hi, unit.c_str());
     std::snprintf(lo, sizeof(lo), "%.3g %s", state.colour_lo, unit.c_str());

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/ usr / bin / env python3
 """The viewer under Xvfb, scripted, judged by its pixels, its stats and its model file.
 
 Usage: viewer_checks.py CHECK HOOKE MESHES OUTDIR
@@ -51,12 +51,12 @@ def check_rest(hooke, meshes, out):
     m, _ = mask(f"{out}/rest.png")
     ys, xs = np.nonzero(m)
     coverage = m.mean()
-    # The camera frames the bounding sphere: a 2 cm x 2 cm cylinder covers about a fifth of a 4:3 image, centred.
+#The camera frames the bounding sphere : a 2 cm x 2 cm cylinder covers about a fifth of a 4 : 3 image, centred.
     print(f"rest: coverage {coverage:.3f}, bbox x {xs.min()}..{xs.max()}, y {ys.min()}..{ys.max()}")
     assert 0.10 < coverage < 0.40, coverage
     assert abs(0.5 * (xs.min() + xs.max()) - 512) < 20, "not centred horizontally"
     assert abs(0.5 * (ys.min() + ys.max()) - 384) < 60, "not centred vertically"
-    # Symmetric about the vertical axis (a cylinder seen from the front).
+#Symmetric about the vertical axis(a cylinder seen from the front).
     width_left, width_right = 512 - xs.min(), xs.max() - 512
     assert abs(width_left - width_right) < 15, (width_left, width_right)
 
@@ -80,8 +80,8 @@ def check_drag(hooke, meshes, out):
     shift_top = (row_centroids(after, top_rows) - row_centroids(before, top_rows)).mean()
     shift_bottom = (row_centroids(after, bottom_rows) - row_centroids(before, bottom_rows)).mean()
     print(f"drag: silhouette shift {shift_top:.1f} px near the top, {shift_bottom:.1f} px near the clamped bottom")
-    # +x is to the right in the default view; the top follows the 3 mm drag (about 45 px at this zoom, less averaged
-    # over the top quarter), the clamped bottom stays.
+#+ x is to the right in the default view; the top follows the 3 mm drag(about 45 px at this zoom, less averaged
+#over the top quarter), the clamped bottom stays.
     assert shift_top > 8.0, shift_top
     assert abs(shift_bottom) < 2.0, shift_bottom
 
@@ -168,7 +168,8 @@ def check_record(hooke, meshes, out):
 
 def check_refusals(hooke, meshes, out):
     mesh = os.path.join(meshes, "cylinder.msh")
-    env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
+    env = {
+k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
     cases = [
         ("no display", ["--young", "1e5", "--poisson", "0.3"], "0 quit\n", "xvfb-run", False),
         ("bad method", ["--young", "1e5", "--poisson", "0.3", "--method", "surface"], "0 quit\n", "surface", True),
@@ -177,6 +178,10 @@ def check_refusals(hooke, meshes, out):
         ("bad colormap", ["--young", "1e5", "--poisson", "0.3", "--colormap", "heat"], "0 quit\n", "heat", True),
         ("nan dt", ["--young", "1e5", "--poisson", "0.3", "--dt", "nan"], "0 quit\n", "dt", True),
     ]
+    other = f"{out}/cone.json"  # a model file made for another mesh
+    subprocess.run([hooke, "calibrate", os.path.join(meshes, "cone.msh"), "--young", "1e5", "--poisson", "0.3", "-o",
+                    other], check=True, capture_output=True)
+    cases.append(("model for another mesh", ["--model", other], "0 quit\n", "cone.json", True))
     for name, options, script, pattern, xvfb in cases:
         shot = f"{out}/refused.png"
         code, log = view(hooke, mesh, out, "refuse", script, *options, "--screenshot", shot, env=env, xvfb=xvfb)
