@@ -1,0 +1,50 @@
+"""hooke.LiveSimulation (the viewer's physics) from Python: a quasi-static drag feels the FEM's holding force, a
+live change of nu recalibrates, bad settings raise with the facts."""
+import numpy as np
+import pytest
+
+import hooke
+
+
+def cylinder_model(method="fem"):
+    mesh = hooke.tet_cylinder(0.01, 0.02, 8, 5)
+    return hooke.calibrate(mesh, hooke.Material(14630.0, 0.3), method)
+
+
+def top_node(model):
+    x = np.asarray(model.mesh.points)
+    top = np.flatnonzero(np.isclose(x[:, 2], x[:, 2].max()))
+    return int(top[np.argmin(np.linalg.norm(x[top, :2], axis=1))])
+
+
+def test_quasi_static_drag_feels_the_fem_holding_force():
+    model = cylinder_model("fem")
+    sim = hooke.LiveSimulation(model, damping_mass=60.0)
+    node = top_node(model)
+    offset = np.array([1e-3, 0.0, -5e-4])
+    sim.grab([node])
+    for k in range(1, 1501):
+        sim.drag(min(1.0, k / 300) * offset)
+        sim.step()
+    target = np.asarray(model.mesh.points)[node] + offset
+    positions, held = hooke.fem_probe_equilibrium(model, "linear", sim.clamped_nodes, [node], target)
+    felt = np.array(sim.probe_force)
+    assert np.linalg.norm(felt - np.array(held)) < 0.01 * np.linalg.norm(held)
+    assert np.abs(np.asarray(sim.positions) - positions).max() < 0.01 * np.abs(offset).max()
+
+
+def test_apply_recalibrates_and_refuses():
+    model = cylinder_model("any-nu-tet")
+    with pytest.raises(hooke.InvalidArgument, match="local-global"):  # volume terms: local/global cannot run them
+        hooke.LiveSimulation(model, integrator="local-global")
+    sim = hooke.LiveSimulation(model)
+    for _ in range(5):
+        sim.step()
+    sim.apply(poisson=0.45, method="any-nu-tet")
+    fresh = hooke.calibrate(model.mesh, hooke.Material(14630.0, 0.45), "any-nu-tet")
+    assert np.array_equal(sim.model.stiffness, fresh.stiffness)
+    with pytest.raises(hooke.InvalidArgument, match="finite"):
+        sim.apply(young=float("nan"))
+    with pytest.raises(hooke.Error):
+        sim.apply(method="surface")
+    assert sim.model.material.nu == 0.45
