@@ -208,7 +208,7 @@ class Viewer {
       m_state.ghost_positions = std::move(r.positions);
       m_state.ghost_force = std::move(r.holding_force);
       m_state.ghost_message = r.message;
-    } catch (const Error& e) {
+    } catch (const std::exception& e) {
       m_state.ghost_positions.reset();
       m_state.ghost_force.resize(0);
       m_state.ghost_message = e.what();

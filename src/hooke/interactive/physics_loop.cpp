@@ -213,13 +213,24 @@ void PhysicsLoop::run_script_commands() {
           if (m_drawing) m_drawing(c);  // the handler must not call back into the loop: it queues the command
           break;
       }
-    } catch (const Error& e) {
+    } catch (const std::exception& e) {
       m_stats.error = "script line " + std::to_string(c.line) + ": " + e.what();
     }
   }
 }
 
 void PhysicsLoop::run() {
+  try {
+    run_steps();
+  } catch (const std::exception& e) {  // never std::terminate: the front end reads the error and goes on drawing
+    std::lock_guard lock(m_mutex);
+    m_stats.error = std::string("the physics thread stopped: ") + e.what();
+    m_latest.stats = m_stats;
+    ++m_latest.version;
+  }
+}
+
+void PhysicsLoop::run_steps() {
   omp_set_num_threads(m_threads);  // this thread's parallel regions
   StepClock clock;
   const Clock::time_point start = Clock::now();
@@ -240,7 +251,7 @@ void PhysicsLoop::run() {
                         now.material.youngs_modulus != old.material.youngs_modulus ||
                         now.material.poisson_ratio != old.material.poisson_ratio || now.density != old.density;
         m_stats.target_rate = 1.0 / now.dt;
-      } catch (const Error& e) {
+      } catch (const std::exception& e) {
         m_stats.error = e.what();
       }
     }
@@ -275,7 +286,7 @@ void PhysicsLoop::run() {
       const solve::StepReport r = m_sim.step();
       m_stats.iterations += r.iterations;
       m_stats.not_converged += r.converged ? 0 : 1;
-    } catch (const Error& e) {
+    } catch (const std::exception& e) {
       m_stats.error = std::string(e.what()) + " (the simulation was reset)";
       m_sim.reset();
       model_changed = true;

@@ -86,7 +86,8 @@ class PhysicsLoop {
   bool script_finished() const;  ///< every command has been carried out
 
  private:
-  void run();
+  void run();        // the thread: run_steps, with any exception reported in PhysicsStats::error
+  void run_steps();  // the loop
   void publish(bool model_changed);
   void run_script_commands();
 
