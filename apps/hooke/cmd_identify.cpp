@@ -58,13 +58,21 @@ void print_study(const experiments::IdentificationStudy& s, const identify::Iden
   const identify::IdentifyReport& r = s.identification.report;
   std::printf("  fitted    %s, objective %s: %d springs (k %.4g .. %.4g N/m), %d volume terms, %.3f s\n",
               std::string(identify::parameters_name(options.parameters)).c_str(),
-              std::string(identify::objective_name(options.objective)).c_str(), s.identification.layout.spring_count(),
-              r.min_stiffness, r.max_stiffness, s.identification.layout.volume_count(), r.seconds);
-  std::printf(
-      "  Eq. 2     force residual %.4g (analytic %.4g), %d iterations, %ld CG iterations, %d at the floor, %s\n",
-      r.force_residual, s.analytic_force_residual, r.least_squares.iterations, r.least_squares.cg_iterations,
-      r.least_squares.at_bound, r.least_squares.converged ? "converged" : "NOT converged");
-  if (options.objective == identify::Objective::kPositions)
+              options.parameters == identify::Parameters::kScale
+                  ? "positions"
+                  : std::string(identify::objective_name(options.objective)).c_str(),
+              s.identification.layout.spring_count(), r.min_stiffness, r.max_stiffness,
+              s.identification.layout.volume_count(), r.seconds);
+  if (options.parameters == identify::Parameters::kScale)
+    std::printf("  Eq. 1     one factor on %s: c = %.6g, G/G_ref %.4g -> %.4g in %d updates (%d equilibria), %s\n",
+                s.analytic_method.c_str(), r.scale_factor, r.position_history.front(), r.position_history.back(),
+                r.position_iterations, r.static_solves, r.converged ? "converged" : "NOT converged");
+  else
+    std::printf(
+        "  Eq. 2     force residual %.4g (analytic %.4g), %d iterations, %ld CG iterations, %d at the floor, %s\n",
+        r.force_residual, s.analytic_force_residual, r.least_squares.iterations, r.least_squares.cg_iterations,
+        r.least_squares.at_bound, r.least_squares.converged ? "converged" : "NOT converged");
+  if (options.objective == identify::Objective::kPositions && options.parameters != identify::Parameters::kScale)
     std::printf(
         "  Eq. 1     G/G_ref %.4g (Eq. 2 fit) / %.4g (%s): from the %s, %.4g in %d iterations (%d equilibria)\n",
         r.eq2_positions_objective, r.start_model_objective, s.analytic_method.c_str(),
@@ -133,8 +141,8 @@ Action add_identify_command(CLI::App& app) {
   add_model_input_options(cmd, o->in);
   cmd->add_option("--law", o->law, "Law of the FEM reference: linear, stvk or neohookean")->capture_default_str();
   cmd->add_option("--params", o->params,
-                  "springs, springs+volume or springs+volume+rest-length (auto: springs+volume on tets, springs on "
-                  "triangles)")
+                  "springs, springs+volume, springs+volume+rest-length, or scale (one factor c on the --compare "
+                  "model's k and k_V, Eq. 1 in closed form) (auto: springs+volume on tets, springs on triangles)")
       ->capture_default_str();
   cmd->add_option("--objective", o->objective, "forces (Eq. 2) or positions (Eq. 1, from the Eq. 2 fit)")
       ->capture_default_str();

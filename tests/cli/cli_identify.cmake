@@ -24,6 +24,20 @@ if(NOT method STREQUAL "identified")
 endif()
 run_ok(compare compare --model ${OUT}/id.json --load shear --strain 0.001 -o ${OUT}/compare)
 
+# One factor on stiffness-fit (Eq. 1 with theta = c): better than stiffness-fit itself on the held-out cases.
+run_ok(identify_scale identify ${mesh} --young 14630 --poisson 0.25 --params scale --compare stiffness-fit --held-out 2
+       --report ${OUT}/scale.json -o ${OUT}/scaled.json)
+file(READ ${OUT}/scale.json report)
+string(JSON c GET "${report}" scale_factor)
+string(JSON held GET "${report}" held_out_relative_l2_rms)
+string(JSON analytic GET "${report}" analytic_held_out_relative_l2_rms)
+if(NOT out MATCHES "one factor on stiffness-fit" OR NOT c GREATER 1.0 OR NOT held LESS analytic)
+  message(FATAL_ERROR "scale: c = ${c}, held out ${held} against stiffness-fit's ${analytic}")
+endif()
+message("scale: c = ${c}, held out ${held} against stiffness-fit's ${analytic}")
+run_fails(scale_unknown_start "unknown calibration method" ${OUT}/y.json identify ${MESHES}/rectangle_tri.msh --young 14630 --poisson 0.3
+          --params scale --compare no-such-method -o ${OUT}/y.json)
+
 # From the files it wrote: the first 12 to fit, the last 2 held out.
 set(files "")
 foreach(i RANGE 1 12)

@@ -6,6 +6,7 @@
 #include <hooke/identify/force_basis.hpp>
 #include <hooke/identify/identify.hpp>
 #include <hooke/identify/positions_objective.hpp>
+#include <hooke/identify/scale_fit.hpp>
 #include <hooke/mesh/generators.hpp>
 #include <hooke/model/problem.hpp>
 #include <random>
@@ -228,4 +229,31 @@ TEST(Identify, RejectsCasesOfTheWrongSizeOrAllHeldOut) {
   EXPECT_THROW(identify::identify(mesh, {bad}), InvalidArgument);
   identify::ReferenceCase held{"held", test::flat_positions(mesh), VecX::Zero(24), std::vector<char>(24, 0), true};
   EXPECT_THROW(identify::identify(mesh, {held}), InvalidArgument);
+}
+
+// Parameters::kScale: data made by a model recovers the factor that was taken off it (geometrically nonlinear
+// springs at a few % strain: the fixed point, not only the linear closed form), and the refusals.
+TEST(Identify, ScaleRecoversTheFactorTakenOffTheModelThatMadeTheData) {
+  const mesh::Mesh mesh = test::irregular_mesh(mesh::ElementKind::kTet, 2, 0.2);
+  const identify::ParameterLayout layout = identify::parameter_layout(mesh, Parameters::kSpringsVolume);
+  const calibrate::SpringModel truth = identify::spring_model(layout, random_parameters(layout, 31, 40.0, 2e-3));
+  std::vector<identify::ReferenceCase> cases = cases_of(mesh, truth, 4, 0.05, 32);
+  cases.back().held_out = true;
+  identify::IdentifyOptions options;
+  options.parameters = Parameters::kScale;
+  options.start_model = identify::scaled(truth, 1.0 / 1.3);
+  const identify::Identification id = identify::identify(mesh, cases, options);
+  EXPECT_TRUE(id.report.converged);
+  EXPECT_NEAR(id.report.scale_factor, 1.3, 1e-8);
+  EXPECT_LT(id.report.position_history.back(), 1e-16);
+  EXPECT_GT(id.report.position_history.front(), 1e-3);
+  EXPECT_LT((id.springs.stiffness - truth.stiffness).cwiseAbs().maxCoeff(), 1e-8 * 40.0);
+  EXPECT_LT((id.springs.volume_stiffness - truth.volume_stiffness).cwiseAbs().maxCoeff(), 1e-8 * 2e-3);
+  // The linear closed form alone is not the answer at this strain: more than one update was needed.
+  EXPECT_GT(id.report.position_iterations, 1);
+
+  options.start_model.reset();
+  EXPECT_THROW(identify::identify(mesh, cases, options), InvalidArgument);
+  EXPECT_THROW(identify::parameter_layout(mesh, Parameters::kScale), InvalidArgument);
+  EXPECT_EQ(identify::parameters_from_name("scale"), Parameters::kScale);
 }

@@ -367,10 +367,14 @@ calibrate::CalibratedModel identified_model(const mesh::Mesh& mesh, const materi
   calibrate::CalibratedModel m;
   m.method = "identified";
   const auto training = std::count(study.held_out.begin(), study.held_out.end(), 0);
-  m.equation = std::string("Lloyd et al. 2007, ") +
-               (options.objective == identify::Objective::kForces ? "Eq. 2 (forces)" : "Eq. 1 (positions)") +
-               ", parameters " + std::string(identify::parameters_name(options.parameters)) + ", identified from " +
-               std::to_string(training) + " reference cases";
+  m.equation =
+      std::string("Lloyd et al. 2007, ") +
+      (options.parameters == identify::Parameters::kScale
+           ? "Eq. 1 (positions) with one factor c = " + std::to_string(study.identification.report.scale_factor) +
+                 " on " + study.analytic_method
+           : (options.objective == identify::Objective::kForces ? "Eq. 2 (forces)" : "Eq. 1 (positions)") +
+                 std::string(", parameters ") + std::string(identify::parameters_name(options.parameters))) +
+      ", identified from " + std::to_string(training) + " reference cases";
   m.mesh = mesh;
   m.material = material;
   m.density = density;
@@ -418,6 +422,7 @@ std::string identification_report_json(const IdentificationStudy& study, const i
                             {"springs", study.identification.layout.spring_count()},
                             {"volume_terms", study.identification.layout.volume_count()},
                             {"min_stiffness_n_per_m", r.min_stiffness},
+                            {"scale_factor", r.scale_factor},
                             {"max_stiffness_n_per_m", r.max_stiffness},
                             {"identification_seconds", r.seconds},
                             {"evaluation_seconds", study.evaluation_seconds}};

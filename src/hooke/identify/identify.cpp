@@ -6,6 +6,7 @@
 #include <hooke/identify/force_basis.hpp>
 #include <hooke/identify/identify.hpp>
 #include <hooke/identify/positions_objective.hpp>
+#include <hooke/identify/scale_fit.hpp>
 #include <limits>
 #include <memory>
 
@@ -281,9 +282,45 @@ double force_residual(const ParameterLayout& layout, const VecX& theta, const st
   return relative_force_residual(layout, theta, all);
 }
 
+namespace {
+
+// Parameters::kScale: one factor on the start model (scale_fit.hpp), reported like an Eq. 1 fit.
+Identification identify_scale(const mesh::Mesh& mesh, const std::vector<ReferenceCase>& cases,
+                              const IdentifyOptions& options, std::chrono::steady_clock::time_point t0) {
+  if (!options.start_model)
+    throw InvalidArgument("identification parameters 'scale' scale a start model: give one (hooke identify --compare)");
+  const ScaleFit fit = fit_scale(mesh, *options.start_model, cases, options.statics, options.position_iterations);
+  Identification out;
+  const bool volume = fit.springs.volume_tets.rows() != 0 && mesh.kind == mesh::ElementKind::kTet;
+  out.layout = parameter_layout(mesh, volume ? Parameters::kSpringsVolume : Parameters::kSprings);
+  out.theta = parameters_of(out.layout, fit.springs);
+  out.springs = fit.springs;
+  IdentifyReport& r = out.report;
+  r.position_iterations = fit.iterations;
+  r.static_solves = fit.static_solves;
+  r.position_history = fit.history;
+  r.start_model_objective = fit.history.front();
+  r.started_from_model = true;
+  r.converged = fit.converged;
+  r.scale_factor = fit.factor;
+  std::vector<const ReferenceCase*> training;
+  for (const ReferenceCase& c : cases)
+    if (!c.held_out) training.push_back(&c);
+  r.force_residual = relative_force_residual(out.layout, out.theta, training);
+  if (out.springs.stiffness.size()) {
+    r.min_stiffness = out.springs.stiffness.minCoeff();
+    r.max_stiffness = out.springs.stiffness.maxCoeff();
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace
+
 Identification identify(const mesh::Mesh& mesh, const std::vector<ReferenceCase>& cases,
                         const IdentifyOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
+  if (options.parameters == Parameters::kScale) return identify_scale(mesh, cases, options, t0);
   const VecX rest_positions = mesh::flat_positions(mesh);
   for (const auto& c : cases) validate_reference(c, rest_positions.size());
   const ReferenceCase rest{"rest", rest_positions, VecX::Zero(rest_positions.size()),

@@ -58,6 +58,7 @@ struct IdentifyReport {
   bool converged = false;      ///< the objective's own test was met
   double min_stiffness = 0.0;  ///< smallest identified spring k, N/m
   double max_stiffness = 0.0;  ///< largest identified spring k, N/m
+  double scale_factor = 0.0;   ///< scale: the fitted factor c on the start model (0 for the other parameters)
   double seconds = 0.0;        ///< wall time
 };
 

@@ -10,10 +10,11 @@
 
 namespace hooke::identify {
 namespace {
-constexpr NameTable<Parameters, 3> kNames{"identification parameters",
+constexpr NameTable<Parameters, 4> kNames{"identification parameters",
                                           {{{Parameters::kSprings, "springs"},
                                             {Parameters::kSpringsVolume, "springs+volume"},
-                                            {Parameters::kSpringsVolumeRestLength, "springs+volume+rest-length"}}}};
+                                            {Parameters::kSpringsVolumeRestLength, "springs+volume+rest-length"},
+                                            {Parameters::kScale, "scale"}}}};
 }  // namespace
 
 Parameters parameters_from_name(std::string_view name) { return kNames.from_name(name); }
@@ -29,6 +30,8 @@ ParameterLayout parameter_layout(const mesh::Mesh& mesh, Parameters parameters) 
   if (mesh.kind != mesh::ElementKind::kTet && mesh.kind != mesh::ElementKind::kTriangle)
     throw InvalidArgument("identification needs a tet or triangle mesh; " + mesh.source + " has " +
                           std::string(mesh::element_kind_name(mesh.kind)) + " elements");
+  if (parameters == Parameters::kScale)
+    throw InvalidArgument("'scale' has no parameter layout: it scales a start model (identify::fit_scale)");
   if (parameters != Parameters::kSprings && mesh.kind != mesh::ElementKind::kTet)
     throw InvalidArgument("identification parameters '" + std::string(parameters_name(parameters)) +
                           "' need a tet mesh (volume terms); use 'springs' on " + mesh.source);

@@ -10,9 +10,12 @@ namespace hooke::identify {
 
 /// Stable names: "springs", "springs+volume", "springs+volume+rest-length".
 enum class Parameters {
-  kSprings,                 ///< k >= 0 per mesh edge; rest lengths are the rest edge lengths
-  kSpringsVolume,           ///< and k_V >= 0 per tet (the volume term of Eq. 14, E = k_V/(2 V0^2) (V - V0)^2)
-  kSpringsVolumeRestLength  ///< and a free offset delta = k (L - l0) per spring: the rest length l0 is fitted too
+  kSprings,                  ///< k >= 0 per mesh edge; rest lengths are the rest edge lengths
+  kSpringsVolume,            ///< and k_V >= 0 per tet (the volume term of Eq. 14, E = k_V/(2 V0^2) (V - V0)^2)
+  kSpringsVolumeRestLength,  ///< and a free offset delta = k (L - l0) per spring: the rest length l0 is fitted too
+  /// One factor c on every k and k_V of a start model (IdentifyOptions::start_model), by Eq. 1 (scale_fit.hpp):
+  /// the analytic model made as compliant as the reference. Not a layout of its own (parameter_layout refuses it).
+  kScale
 };
 Parameters parameters_from_name(std::string_view name);  ///< @throws InvalidArgument listing the names
 std::string_view parameters_name(Parameters parameters);

@@ -1,0 +1,61 @@
+#include <cmath>
+#include <hooke/core/error.hpp>
+#include <hooke/identify/positions_objective.hpp>
+#include <hooke/identify/scale_fit.hpp>
+#include <hooke/mesh/mesh.hpp>
+#include <string>
+
+namespace hooke::identify {
+
+calibrate::SpringModel scaled(calibrate::SpringModel springs, double factor) {
+  springs.stiffness *= factor;
+  springs.volume_stiffness *= factor;
+  return springs;
+}
+
+ScaleFit fit_scale(const mesh::Mesh& mesh, const calibrate::SpringModel& start, const std::vector<ReferenceCase>& cases,
+                   const solve::StaticOptions& statics, int max_iterations) {
+  const VecX rest = mesh::flat_positions(mesh);
+  std::vector<const ReferenceCase*> training;
+  double g_ref = 0.0;
+  for (const ReferenceCase& c : cases) {
+    validate_reference(c, rest.size());
+    if (c.held_out) continue;
+    training.push_back(&c);
+    g_ref += (c.positions - rest).squaredNorm();
+  }
+  if (training.empty() || !(g_ref > 0.0))
+    throw InvalidArgument("the scale fit needs at least one training case that moves the body");
+  ScaleFit out;
+  std::vector<VecX> warm(training.size());  // each case's last equilibrium: the next solve's start
+  for (int it = 0; it <= max_iterations; ++it) {
+    out.springs = scaled(start, out.factor);
+    const auto model = calibrate::make_model(mesh, out.springs);
+    double uu = 0.0, u_ref = 0.0, g = 0.0;
+    for (std::size_t k = 0; k < training.size(); ++k) {
+      const ReferenceCase& c = *training[k];
+      const solve::StaticResult r = reference_equilibrium(model, c, statics, warm[k]);
+      ++out.static_solves;
+      if (r.report.status != solve::SolveStatus::kConverged)
+        throw SolverFailure("scale fit, case '" + c.name + "' at c = " + std::to_string(out.factor) +
+                            ": no equilibrium (" + r.report.message + ")");
+      warm[k] = r.positions;
+      const VecX u = r.positions - rest, ref = c.positions - rest;
+      uu += u.squaredNorm();
+      u_ref += u.dot(ref);
+      g += (r.positions - c.positions).squaredNorm();
+    }
+    out.history.push_back(g / g_ref);
+    if (out.converged || it == max_iterations) break;
+    if (!(u_ref > 0.0))
+      throw SolverFailure("scale fit: the model moves against the reference (sum u . u_ref <= 0): no c > 0 fits");
+    // Linear about the current c: u(c') = u(c) c / c', whose best c' is c |u|^2 / (u . u_ref).
+    const double next = out.factor * uu / u_ref;
+    out.converged = std::abs(next / out.factor - 1.0) < 1e-9;
+    out.factor = next;
+    ++out.iterations;
+  }
+  return out;
+}
+
+}  // namespace hooke::identify
