@@ -51,6 +51,11 @@ calibrate::CalibratedModel load_model(const ModelSource& in);
 /// @throws InvalidArgument naming the option and the value
 void require_finite_numbers(const CLI::App& app);
 
+/// Parses argv into `app`, checks its numbers (require_finite_numbers) and runs `action`, mapping the outcome to the
+/// exit code every hooke program uses: 0 success (and --help), 2 bad input or a parse error, 3 solver failure, 4
+/// internal error; messages go to stderr prefixed with `program`.
+int parse_and_run(CLI::App& app, int argc, char** argv, const char* program, const std::function<int()>& action);
+
 /// `hooke fem`: linear or nonlinear FEM reference solve of a load case.
 Action add_fem_command(CLI::App& app);
 /// `hooke compare`: a calibrated spring model against the FEM reference.

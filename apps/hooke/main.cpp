@@ -32,14 +32,7 @@ int main(int argc, char** argv) {
         "this hooke was built without the viewer: install GLFW, OpenGL and Dear ImGui (scripts/setup.sh) and rebuild");
   };
 #endif
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
-  try {
-    hooke::cli::require_finite_numbers(app);
+  return hooke::cli::parse_and_run(app, argc, argv, "hooke", [&]() -> int {
     if (app.got_subcommand("fem")) return fem();
     if (app.got_subcommand("mesh")) return mesh();
     if (app.got_subcommand("compare")) return compare();
@@ -49,15 +42,6 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("calibrate")) return calibrate();
     if (app.got_subcommand("identify")) return identify();
     if (app.got_subcommand("view")) return view();
-  } catch (const hooke::SolverFailure& e) {
-    std::fprintf(stderr, "hooke: solver failure: %s\n", e.what());
-    return 3;
-  } catch (const hooke::Error& e) {
-    std::fprintf(stderr, "hooke: error: %s\n", e.what());
     return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "hooke: internal error: %s\n", e.what());
-    return 4;
-  }
-  return 2;
+  });
 }

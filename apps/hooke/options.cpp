@@ -1,4 +1,5 @@
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/calibrate/model_file.hpp>
@@ -91,6 +92,28 @@ calibrate::CalibratedModel load_model(const ModelSource& in) {
   mo.density = in.density;
   if (in.method == "surface") mo.surface = surface_options(in.surface);
   return calibrate::calibrate_model(io::read_mesh(in.mesh_path, ro), mat, mo);
+}
+
+int parse_and_run(CLI::App& app, int argc, char** argv, const char* program, const std::function<int()>& action) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    require_finite_numbers(app);
+    return action();
+  } catch (const SolverFailure& e) {
+    std::fprintf(stderr, "%s: solver failure: %s\n", program, e.what());
+    return 3;
+  } catch (const Error& e) {
+    std::fprintf(stderr, "%s: error: %s\n", program, e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: internal error: %s\n", program, e.what());
+    return 4;
+  }
 }
 
 }  // namespace hooke::cli

@@ -306,8 +306,7 @@ class Viewer {
         bool have = false;
         m_loop.with([&](const interactive::LiveSimulation& sim) {
           if (const auto* penalty = sim.volume_penalty()) {
-            value = interactive::interaction_weights(*penalty, m_snap.positions,
-                                                     m_snap.interaction ? &*m_snap.interaction : nullptr);
+            value = penalty->weights(m_snap.positions, m_snap.interaction ? &*m_snap.interaction : nullptr);
             have = true;
           }
         });

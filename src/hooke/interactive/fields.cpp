@@ -93,11 +93,6 @@ VecX spring_strain(const calibrate::SpringModel& springs, const VecX& x, int nod
   return sum;
 }
 
-VecX interaction_weights(const surface::VolumePenaltyBlock& penalty, const VecX& x,
-                         const model::Interaction* interaction) {
-  return penalty.weights(x, interaction);
-}
-
 std::array<float, 3> colormap(double t) {
   // Three anchors, linear in between: dark blue, teal, yellow (lightness rises monotonically).
   static constexpr float kAnchors[3][3] = {{0.18f, 0.10f, 0.42f}, {0.12f, 0.56f, 0.55f}, {0.98f, 0.90f, 0.15f}};

@@ -1,10 +1,9 @@
 #pragma once
 /// What a viewer draws of a model: its outer surface, and per-node scalar fields for colour maps (displacement
-/// magnitude, distance to a reference solution, spring strain, the surface model's Eq. 4 weights).
+/// magnitude, distance to a reference solution, spring strain; the surface model's Eq. 4 weights come from
+/// surface::VolumePenaltyBlock::weights).
 #include <array>
 #include <hooke/calibrate/calibrated_model.hpp>
-#include <hooke/model/interaction.hpp>
-#include <hooke/surface/volume_penalty_block.hpp>
 #include <string>
 #include <vector>
 
@@ -34,10 +33,6 @@ VecX node_distance(const VecX& x, const VecX& y, int dim);
 /// Mean spring strain l / l0 - 1 per node over the springs at that node (0 where there are none): stretch > 0,
 /// compression < 0. @pre x flat, dim per node, springs on its nodes
 VecX spring_strain(const calibrate::SpringModel& springs, const VecX& x, int node_count);
-/// The surface model's Eq. 4 weights per node under `interaction` (all 1 without one).
-VecX interaction_weights(const surface::VolumePenaltyBlock& penalty, const VecX& x,
-                         const model::Interaction* interaction);
-
 /// A colour for value t in [0, 1] (clamped) on a perceptually ordered map (dark blue -> teal -> yellow), RGB in
 /// [0, 1]. Used by the viewer's surfaces and its colour bar alike.
 std::array<float, 3> colormap(double t);

@@ -57,6 +57,7 @@ struct LiveSimulation::Impl {
   std::vector<int> clamped;
   std::optional<solve::Simulator> sim;
   std::optional<model::Interaction> interaction;
+  long model_version = 0;
   solve::Probe probe;
   VecX grab_positions, offset, force;
 
@@ -170,6 +171,7 @@ void LiveSimulation::apply(const LiveSettings& s) {
   next.grab_positions = m->grab_positions;
   next.offset = m->offset;
   next.force = m->force;
+  next.model_version = m->model_version + (recalibrate ? 1 : 0);
   next.rebuild(x, v);
   *m = std::move(next);
 }
@@ -239,6 +241,7 @@ const VecX& LiveSimulation::positions() const { return m->sim->positions(); }
 const VecX& LiveSimulation::velocities() const { return m->sim->velocities(); }
 const VecX& LiveSimulation::rest_positions() const { return m->built.model->rest_positions(); }
 const calibrate::CalibratedModel& LiveSimulation::model() const { return m->model; }
+long LiveSimulation::model_version() const { return m->model_version; }
 const surface::VolumePenaltyBlock* LiveSimulation::volume_penalty() const { return m->built.volume_penalty; }
 const std::optional<model::Interaction>& LiveSimulation::interaction() const { return m->interaction; }
 const std::vector<int>& LiveSimulation::clamped_nodes() const { return m->clamped; }

@@ -89,6 +89,9 @@ class LiveSimulation {
   const VecX& velocities() const;                   ///< flat, m/s
   const VecX& rest_positions() const;               ///< flat, m
   const calibrate::CalibratedModel& model() const;  ///< the model being simulated
+  /// Increases each time apply() recalibrates the model (0 for the first): what a front end caching data of the
+  /// model (its springs, say) compares.
+  long model_version() const;
   /// The surface model's volume penalty (null for other models): Eq. 4 weights for drawing.
   const surface::VolumePenaltyBlock* volume_penalty() const;
   /// The surface model's current interaction (the probe's point and direction), if any.

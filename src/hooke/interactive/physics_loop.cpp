@@ -70,7 +70,7 @@ void apply_setting(LiveSettings& s, const std::string& key, const std::string& v
 PhysicsLoop::PhysicsLoop(LiveSimulation simulation, bool realtime, int threads)
     : m_sim(std::move(simulation)), m_realtime(realtime), m_threads(std::max(threads, 1)) {
   m_stats.target_rate = 1.0 / m_sim.settings().dt;
-  publish(true);
+  publish();
 }
 
 PhysicsLoop::~PhysicsLoop() { stop(); }
@@ -147,8 +147,7 @@ bool PhysicsLoop::script_finished() const {
 }
 
 // Under m_mutex.
-void PhysicsLoop::publish(bool model_changed) {
-  if (model_changed) ++m_model_version;
+void PhysicsLoop::publish() {
   Snapshot& s = m_latest;
   ++s.version;
   s.positions = m_sim.positions();
@@ -158,7 +157,7 @@ void PhysicsLoop::publish(bool model_changed) {
   s.probe_offset = m_sim.probe_offset();
   s.interaction = m_sim.interaction();
   s.settings = m_sim.settings();
-  s.model_version = m_model_version;
+  s.model_version = m_sim.model_version();
   m_stats.sim_time = m_sim.time();
   s.stats = m_stats;
 }
@@ -198,7 +197,7 @@ void PhysicsLoop::run_script_commands() {
           apply_setting(s, c.key, c.value);
           m_sim.apply(s);
           m_stats.target_rate = 1.0 / s.dt;
-          publish(true);
+          publish();
           break;
         }
         case ScriptAction::kReset:
@@ -208,7 +207,7 @@ void PhysicsLoop::run_script_commands() {
         case ScriptAction::kPause: m_paused = m_stats.paused = true; break;
         case ScriptAction::kResume: m_paused = m_stats.paused = false; break;
         default:  // drawing: the front end, with the state of this time
-          publish(false);
+          publish();
           m_waiting_for_drawing = m_drawing != nullptr;
           if (m_drawing) m_drawing(c);  // the handler must not call back into the loop: it queues the command
           break;
@@ -239,25 +238,19 @@ void PhysicsLoop::run_steps() {
   std::unique_lock lock(m_mutex);
   while (!m_stop) {
     // Commands from the front end, then the script's.
-    bool model_changed = false;
     while (!m_commands.empty()) {
       auto command = std::move(m_commands.front());
       m_commands.pop_front();
       try {
-        const LiveSettings old = m_sim.settings();
         command(m_sim);
-        const LiveSettings& now = m_sim.settings();
-        model_changed = model_changed || now.method != old.method ||
-                        now.material.youngs_modulus != old.material.youngs_modulus ||
-                        now.material.poisson_ratio != old.material.poisson_ratio || now.density != old.density;
-        m_stats.target_rate = 1.0 / now.dt;
+        m_stats.target_rate = 1.0 / m_sim.settings().dt;
       } catch (const std::exception& e) {
         m_stats.error = e.what();
       }
     }
     run_script_commands();
     if (m_waiting_for_drawing) {  // the front end draws this state; wait for it
-      publish(model_changed);
+      publish();
       const Clock::time_point t0 = Clock::now();
       m_wake.wait(lock, [this] { return m_stop || !m_waiting_for_drawing; });
       paused_seconds += std::chrono::duration<double>(Clock::now() - t0).count();  // not the physics' time
@@ -266,7 +259,7 @@ void PhysicsLoop::run_steps() {
       continue;
     }
     if (m_paused) {
-      publish(model_changed);
+      publish();
       const Clock::time_point t0 = Clock::now();
       m_wake.wait_for(lock, std::chrono::milliseconds(5));
       paused_seconds += std::chrono::duration<double>(Clock::now() - t0).count();
@@ -289,7 +282,6 @@ void PhysicsLoop::run_steps() {
     } catch (const std::exception& e) {
       m_stats.error = std::string(e.what()) + " (the simulation was reset)";
       m_sim.reset();
-      model_changed = true;
     }
     const Clock::time_point t1 = Clock::now();
     const double step_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
@@ -307,7 +299,7 @@ void PhysicsLoop::run_steps() {
       m_stats.step_ms_median = experiments::quantile(w, 0.5);
       m_stats.step_ms_p99 = experiments::quantile(w, 0.99);
     }
-    publish(model_changed);
+    publish();
     if (m_realtime) {
       // One step per period of wall time. Behind by more than 50 periods: drop the backlog (the panel says we are
       // behind) rather than running flat out to catch up.

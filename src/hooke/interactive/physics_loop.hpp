@@ -88,7 +88,7 @@ class PhysicsLoop {
  private:
   void run();        // the thread: run_steps, with any exception reported in PhysicsStats::error
   void run_steps();  // the loop
-  void publish(bool model_changed);
+  void publish();
   void run_script_commands();
 
   LiveSimulation m_sim;
@@ -101,7 +101,6 @@ class PhysicsLoop {
   bool m_stop = false, m_paused = false, m_waiting_for_drawing = false;
   std::deque<std::function<void(LiveSimulation&)>> m_commands;
   Snapshot m_latest;
-  long m_model_version = 0;
   PhysicsStats m_stats;
   std::vector<ScriptCommand> m_script;
   size_t m_script_next = 0;
