@@ -7,12 +7,12 @@
 
 #include <chrono>
 
+#include <hooke/core/sparse_cholesky.hpp>
 #include <hooke/experiments/load_case.hpp>
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/mesh/generators.hpp>
 #include <hooke/model/problem.hpp>
 #include <hooke/solve/detail/reduce.hpp>
-#include <hooke/solve/sparse_cholesky.hpp>
 #include <memory>
 
 #include "bench_common.hpp"
@@ -62,7 +62,7 @@ void BM_Factorization(benchmark::State& state) {
   const VecX f = map.restrict(s.problem.external_force);
   double solve_seconds = 0.0;
   for (auto _ : state) {
-    solve::SparseCholesky chol;
+    SparseCholesky chol;
     if (!chol.factorize(k)) state.SkipWithError("factorisation failed");
     state.PauseTiming();
     const auto t0 = std::chrono::steady_clock::now();

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <hooke/calibrate/method.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/core/sparse_cholesky.hpp>
 #include <hooke/experiments/identification.hpp>
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/identify/positions_objective.hpp>
@@ -12,7 +13,6 @@
 #include <hooke/mesh/topology.hpp>
 #include <hooke/model/mass.hpp>
 #include <hooke/solve/detail/reduce.hpp>
-#include <hooke/solve/sparse_cholesky.hpp>
 #include <nlohmann/json.hpp>
 #include <random>
 
@@ -192,7 +192,7 @@ std::vector<identify::ReferenceCase> fem_reference_cases(const mesh::Mesh& mesh,
     for (int dof = 0; dof < static_cast<int>(rest.size()); ++dof)
       if (!e.fixed_dofs[static_cast<std::size_t>(dof)]) free.push_back(dof);
     const solve::detail::FreeMap map(free, static_cast<int>(rest.size()));
-    solve::SparseCholesky cholesky;
+    SparseCholesky cholesky;
     if (!cholesky.factorize(map.restrict(stiffness)))
       throw SolverFailure("reference loads: the FEM stiffness with the " + std::string(1, kAxes[e.axis]) +
                           " supports is singular (is the mesh connected?)");

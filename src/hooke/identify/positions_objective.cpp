@@ -1,11 +1,11 @@
 #include <cmath>
 #include <hooke/calibrate/spring_model.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/core/sparse_cholesky.hpp>
 #include <hooke/identify/force_basis.hpp>
 #include <hooke/identify/positions_objective.hpp>
 #include <hooke/model/problem.hpp>
 #include <hooke/solve/detail/reduce.hpp>
-#include <hooke/solve/sparse_cholesky.hpp>
 #include <limits>
 
 namespace hooke::identify {
@@ -80,7 +80,7 @@ double PositionsObjective::value(const VecX& theta, VecX* gradient) {
     model::Problem problem = model::make_problem(model);
     problem.fixed_dofs = ref.fixed_dofs;
     const solve::detail::FreeMap free(model::free_dofs(problem), model->dof_count());
-    solve::SparseCholesky cholesky;
+    SparseCholesky cholesky;
     if (!cholesky.factorize(free.restrict(model->hessian(result.positions))))
       return std::numeric_limits<double>::infinity();
     const VecX lambda_free = cholesky.solve(free.restrict(miss));

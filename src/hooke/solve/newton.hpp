@@ -4,8 +4,8 @@
 /// PSD-projected fallback and Levenberg shifts; sparse Cholesky (with modified-Newton reuse) or block-Jacobi
 /// conjugate gradients (Eisenstat-Walker forcing); Armijo backtracking on the objective, or on the residual norm
 /// where the forces have no potential; GMRES refinement of the step where the Hessian is an approximation.
+#include <hooke/core/sparse_cholesky.hpp>
 #include <hooke/core/types.hpp>
-#include <hooke/solve/sparse_cholesky.hpp>
 #include <memory>
 #include <string_view>
 #include <vector>

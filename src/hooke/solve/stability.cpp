@@ -1,7 +1,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <hooke/core/error.hpp>
-#include <hooke/solve/sparse_cholesky.hpp>
+#include <hooke/core/sparse_cholesky.hpp>
 #include <hooke/solve/stability.hpp>
 #include <random>
 

@@ -1,9 +1,9 @@
 #pragma once
 /// Static equilibrium of a Problem: the linear solve K u = f, and Newton's method on the total potential
 /// energy with line search, load stepping and a stability check of every accepted state.
+#include <hooke/core/sparse_cholesky.hpp>
 #include <hooke/model/problem.hpp>
 #include <hooke/solve/newton.hpp>
-#include <hooke/solve/sparse_cholesky.hpp>
 #include <string>
 #include <vector>
 

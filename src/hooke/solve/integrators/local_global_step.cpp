@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <hooke/core/error.hpp>
+#include <hooke/core/sparse_cholesky.hpp>
 #include <hooke/solve/detail/incremental_potential.hpp>
 #include <hooke/solve/detail/integrator_step.hpp>
 #include <hooke/solve/detail/sparse_ops.hpp>
-#include <hooke/solve/sparse_cholesky.hpp>
 #include <string>
 
 namespace hooke::solve::detail {

@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <hooke/core/error.hpp>
-#include <hooke/solve/sparse_cholesky.hpp>
+#include <hooke/core/sparse_cholesky.hpp>
 #include <type_traits>
 #include <vector>
 
-namespace hooke::solve {
+namespace hooke {
 
 // Below this many unknowns kAuto uses Eigen's simplicial LDL^T: there CHOLMOD's supernodal path hands tiny
 // dense blocks to a threaded BLAS whose threads spend their time waking and yielding. Measured on
@@ -269,4 +269,4 @@ std::string_view SparseCholesky::backend_name() const {
   return m_impl->backend == CholeskyBackend::kCholmod ? "cholmod" : "eigen-ldlt";
 }
 
-}  // namespace hooke::solve
+}  // namespace hooke

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string_view>
 
-namespace hooke::solve {
+namespace hooke {
 
 enum class CholeskyBackend {
   kAuto,     ///< Eigen below 5 000 unknowns (no threaded-BLAS overhead), CHOLMOD from there on
@@ -39,4 +39,4 @@ class SparseCholesky {
   std::unique_ptr<Impl> m_impl;
 };
 
-}  // namespace hooke::solve
+}  // namespace hooke

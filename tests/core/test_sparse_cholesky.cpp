@@ -2,12 +2,12 @@
 
 #include <support/matrices.hpp>
 
+#include <hooke/core/sparse_cholesky.hpp>
 #include <hooke/mesh/generators.hpp>
 #include <hooke/mesh/topology.hpp>
-#include <hooke/solve/sparse_cholesky.hpp>
 #include <random>
 
-namespace hooke::solve {
+namespace hooke {
 namespace {
 
 TEST(SparseCholesky, CholmodAndEigenAgree) {
@@ -83,4 +83,4 @@ TEST(SparseCholesky, ReusesAnalysisAcrossValues) {
 }
 
 }  // namespace
-}  // namespace hooke::solve
+}  // namespace hooke
