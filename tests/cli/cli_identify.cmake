@@ -24,14 +24,16 @@ if(NOT method STREQUAL "identified")
 endif()
 run_ok(compare compare --model ${OUT}/id.json --load shear --strain 0.001 -o ${OUT}/compare)
 
-# One factor on stiffness-fit (Eq. 1 with theta = c): better than stiffness-fit itself on the held-out cases.
+# One factor on stiffness-fit (Eq. 1 with theta = c): better than stiffness-fit itself on the held-out cases. Since
+# stiffness-fit already carries the factor fitted under self-weight (calibrate/stiffness_scale.hpp), the one fitted to
+# these load cases stays within 10 % of 1.
 run_ok(identify_scale identify ${mesh} --young 14630 --poisson 0.25 --params scale --compare stiffness-fit --held-out 2
        --report ${OUT}/scale.json -o ${OUT}/scaled.json)
 file(READ ${OUT}/scale.json report)
 string(JSON c GET "${report}" scale_factor)
 string(JSON held GET "${report}" held_out_relative_l2_rms)
 string(JSON analytic GET "${report}" analytic_held_out_relative_l2_rms)
-if(NOT out MATCHES "one factor on stiffness-fit" OR NOT c GREATER 1.0 OR NOT held LESS analytic)
+if(NOT out MATCHES "one factor on stiffness-fit" OR NOT c GREATER 0.9 OR NOT c LESS 1.1 OR NOT held LESS analytic)
   message(FATAL_ERROR "scale: c = ${c}, held out ${held} against stiffness-fit's ${analytic}")
 endif()
 message("scale: c = ${c}, held out ${held} against stiffness-fit's ${analytic}")

@@ -4,6 +4,7 @@
 #include <hooke/calibrate/detail/element_springs.hpp>
 #include <hooke/calibrate/method.hpp>
 #include <hooke/calibrate/stiffness_fit.hpp>
+#include <hooke/calibrate/stiffness_scale.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
 #include <hooke/mesh/measure.hpp>
@@ -124,8 +125,19 @@ SpringModel calibrate(const mesh::Mesh& m, const std::vector<material::Material>
   };
   const bool planar_tri = m.kind == ElementKind::kTriangle, quad = m.kind == ElementKind::kQuad,
              tet = m.kind == ElementKind::kTet;
-  if (method == Method::kStiffnessFit) return stiffness_fit(m, materials);
-  if (method == Method::kStiffnessFitVolume) return stiffness_fit(m, materials, {.volume = VolumeTerm::kVolumetric});
+  if (method == Method::kStiffnessFit || method == Method::kStiffnessFitVolume) {
+    // Sec. 4.2.1 per element, then one factor on the springs from Eq. 1 under self-weight (stiffness_scale.hpp).
+    const SpringModel fit = stiffness_fit(
+        m, materials, {.volume = method == Method::kStiffnessFit ? VolumeTerm::kNone : VolumeTerm::kVolumetric});
+    const StiffnessScale scale = fit_self_weight_scale(m, materials, fit);
+    if (!scale.note.empty())
+      log_warning(std::string(method_name(method)) + ": the fitted springs are left unscaled: " + scale.note);
+    else
+      log(LogLevel::kInfo, std::string(method_name(method)) + ": springs scaled by c = " +
+                               std::to_string(scale.factor) + " (self-weight, Eq. 1; relative error " +
+                               std::to_string(scale.error_before) + " -> " + std::to_string(scale.error_after) + ")");
+    return with_scaled_springs(fit, scale.factor);
+  }
   if (m.kind == mesh::ElementKind::kTriangle || m.kind == mesh::ElementKind::kQuad || m.kind == mesh::ElementKind::kTet)
     for (const auto& w : validity_warnings(m, materials, method)) log_warning(w);
   detail::EdgeAccumulator acc(m);

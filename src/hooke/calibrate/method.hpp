@@ -16,8 +16,10 @@ enum class Method {
   kLloydSquare,         ///< "lloyd-square": Eq. 10-11, edges 5/16 t E (l0 = 6/5 l), diagonals 7/16 t E (l0 = 6/7 l)
   kLloydTet,            ///< "lloyd-tet": Eq. 12 with Eq. 13, k = sum_e 2 sqrt(2)/25 l_e E
   kLloydTetVolume,      ///< "lloyd-tet-volume": Eq. 14, springs plus volume terms
-  kStiffnessFit,        ///< "stiffness-fit": per element, non-negative least squares on ||K_FEM - K_MSM||_F
-  kStiffnessFitVolume,  ///< "stiffness-fit-volume": springs fitted at (E_s, nu = 1/4) plus k_V = lambda_V V0 per tet
+  kStiffnessFit,        ///< "stiffness-fit": per element, non-negative least squares on ||K_FEM - K_MSM||_F, then one
+                        ///< factor on all springs from Eq. 1 under self-weight (fit_self_weight_scale)
+  kStiffnessFitVolume,  ///< "stiffness-fit-volume": springs fitted at (E_s, nu = 1/4) plus k_V = lambda_V V0 per tet,
+                        ///< the springs then scaled as in stiffness-fit
   kAnyNuTet,            ///< "any-nu-tet": Eq. 12-13 springs at E_s plus k_V = lambda_V V0 per tet (cauchy_split)
   kAnyNuTriangle  ///< "any-nu-triangle": Eq. 9 springs at E_s plus k_A = lambda_A t A0 per triangle (cauchy_split_2d)
 };

@@ -59,10 +59,12 @@ std::string method_equation(std::string_view method) {
   if (method == "lloyd-tet-volume") return "Lloyd et al. 2007, Eq. 14 with the equivalent edge length of Eq. 13";
   if (method == "stiffness-fit")
     return "Lloyd et al. 2007, Sec. 3.3 numerically: per element min ||K_FEM - K_MSM||_F, k >= 0 (tets: K_FEM at "
-           "E, nu = 1/4, what springs can carry; docs/methods/any_nu.md)";
+           "E, nu = 1/4, what springs can carry), then all k times one c fitted by Eq. 1 to the linear FEM under "
+           "self-weight (docs/methods/any_nu.md)";
   if (method == "stiffness-fit-volume")
     return "docs/methods/any_nu.md: per tet min ||K_FEM(5 mu/2, 1/4) - K_MSM||_F, k >= 0, and a volume term "
-           "k_V = (lambda - mu) V0 for nu >= 1/4 (App. C.2)";
+           "k_V = (lambda - mu) V0 for nu >= 1/4 (App. C.2); the springs times one c fitted by Eq. 1 to the "
+           "linear FEM under self-weight";
   if (method == "any-nu-tet")
     return "docs/methods/any_nu.md: Lloyd et al. 2007 Eq. 12-13 springs at E_s = 5 mu / 2 and a volume term "
            "k_V = (lambda - mu) V0 per tet (App. C.2) for nu >= 1/4; below, Eq. 12-13 at E (lloyd-tet)";

@@ -24,6 +24,22 @@ std::shared_ptr<model::Model> make_model(const mesh::Mesh& mesh, const SpringMod
   return m;
 }
 
+SpringModel springs_part(const SpringModel& springs) {
+  SpringModel out = springs;
+  out.volume_tets.resize(0, 0);
+  out.volume_stiffness.resize(0);
+  out.rest_volume.resize(0);
+  return out;
+}
+
+SpringModel volume_part(const SpringModel& springs) {
+  SpringModel out = springs;
+  out.pairs.clear();
+  out.stiffness.resize(0);
+  out.rest_length.resize(0);
+  return out;
+}
+
 SparseMatrix linearised_stiffness(const mesh::Mesh& mesh, const SpringModel& s) {
   const auto m = make_model(mesh, s);
   return m->hessian(m->rest_positions());

@@ -29,6 +29,11 @@ void add_spring_terms(model::Model& model, const SpringModel& springs);
 /// and an OrientationGuard on the mesh's elements (states with an inverted element are inadmissible).
 std::shared_ptr<model::Model> make_model(const mesh::Mesh& mesh, const SpringModel& springs);
 
+/// The springs of `springs` alone (no volume or area terms).
+SpringModel springs_part(const SpringModel& springs);
+/// The volume (or area) terms of `springs` alone (no springs).
+SpringModel volume_part(const SpringModel& springs);
+
 /// Linearised stiffness of `springs` at the rest positions (its Hessian there), N/m.
 SparseMatrix linearised_stiffness(const mesh::Mesh& mesh, const SpringModel& springs);
 

@@ -1,0 +1,158 @@
+#include <Eigen/SVD>
+#include <cmath>
+#include <hooke/calibrate/stiffness_scale.hpp>
+#include <hooke/core/sparse_cholesky.hpp>
+#include <hooke/fem/elastic_block.hpp>
+#include <hooke/mesh/measure.hpp>
+#include <hooke/model/mass.hpp>
+#include <memory>
+
+namespace hooke::calibrate {
+namespace {
+
+// The rows and columns of `k` at the DOFs marked free.
+SparseMatrix restrict_to(const SparseMatrix& k, const std::vector<int>& free_dofs) {
+  std::vector<Triplet> t;
+  t.reserve(free_dofs.size());
+  for (size_t r = 0; r < free_dofs.size(); ++r) t.emplace_back(static_cast<int>(r), free_dofs[r], 1.0);
+  SparseMatrix p(static_cast<Eigen::Index>(free_dofs.size()), k.rows());
+  p.setFromTriplets(t.begin(), t.end());
+  return SparseMatrix(p * k * p.transpose());
+}
+
+// Nodes whose last coordinate is within `slab` of the lowest (slab = 0: the bottom face, 1e-6 of the diagonal).
+std::vector<int> held_nodes(const mesh::Mesh& m, double slab) {
+  const int up = m.dim() - 1;
+  const double bottom = m.nodes.col(up).minCoeff(), top = m.nodes.col(up).maxCoeff();
+  const double tol = slab > 0.0 ? slab * (top - bottom) : 1e-6 * mesh::bounding_box_diagonal(m);
+  std::vector<int> out;
+  for (int i = 0; i < m.node_count(); ++i)
+    if (m.nodes(i, up) <= bottom + tol) out.push_back(i);
+  return out;
+}
+
+// True when holding `nodes` removes every rigid motion: two distinct nodes in 2D, three not on a line in 3D. (A
+// factorisation does not detect the singular alternative reliably: roundoff leaves tiny positive pivots.)
+bool holds_rigidly(const mesh::Mesh& m, const std::vector<int>& nodes) {
+  if (nodes.size() < static_cast<size_t>(m.dim())) return false;
+  RowMatX p(static_cast<Eigen::Index>(nodes.size()), m.dim());
+  for (size_t i = 0; i < nodes.size(); ++i) p.row(static_cast<Eigen::Index>(i)) = m.nodes.row(nodes[i]);
+  p.rowwise() -= p.colwise().mean();
+  const VecX sv = Eigen::JacobiSVD<MatX>(MatX(p)).singularValues();
+  const double scale = mesh::bounding_box_diagonal(m);
+  return sv(m.dim() - 2) > 1e-6 * scale;
+}
+
+// Sum over load cases (columns) of w_a a_a . b_a.
+double weighted_dot(const MatX& a, const MatX& b, const VecX& w) {
+  return (a.array() * b.array()).colwise().sum().matrix().dot(w);
+}
+
+// Displacements (free DOFs x 3 load cases) of the matrix factorised in `c`.
+MatX solve_all(const SparseCholesky& c, const MatX& loads) {
+  MatX u(loads.rows(), loads.cols());
+  for (Eigen::Index j = 0; j < loads.cols(); ++j) u.col(j) = c.solve(loads.col(j));
+  return u;
+}
+
+}  // namespace
+
+SpringModel with_scaled_springs(SpringModel springs, double factor) {
+  springs.stiffness *= factor;
+  return springs;
+}
+
+StiffnessScale fit_self_weight_scale(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
+                                     const SpringModel& springs) {
+  StiffnessScale out;
+  const int d = mesh.dim(), n = mesh.node_count();
+  const VecX rest = Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size());  // row-major: node-major flat
+
+  // K_FEM of the linear law (every law linearises to it at rest), the springs' K_s and the volume terms' K_V.
+  std::vector<material::Material> linear = materials;
+  for (auto& mat : linear) mat.law = material::Law::kLinear;
+  model::Model fem_model(d, rest);
+  fem_model.add(std::make_unique<fem::ElasticBlock>(mesh, linear));
+  const SparseMatrix k_fem = fem_model.hessian(rest);
+  const SparseMatrix k_springs = linearised_stiffness(mesh, springs_part(springs));
+  const bool has_volume = springs.volume_stiffness.size() > 0;
+  const SparseMatrix k_volume =
+      has_volume ? linearised_stiffness(mesh, volume_part(springs)) : SparseMatrix(k_fem.rows(), k_fem.cols());
+
+  // Unit body force along each axis: nodal forces = the lumped volume (area x t in 2D) of each node.
+  const VecX weight = model::lumped_masses(mesh, 1.0, materials.front().thickness);
+
+  for (double slab : {0.0, 0.05, 0.10, 0.20}) {
+    const std::vector<int> held = held_nodes(mesh, slab);
+    if (!holds_rigidly(mesh, held)) continue;
+    std::vector<char> is_held(static_cast<size_t>(n), 0);
+    for (int i : held) is_held[static_cast<size_t>(i)] = 1;
+    std::vector<int> free_dofs;
+    for (int i = 0; i < n; ++i)
+      if (!is_held[static_cast<size_t>(i)])
+        for (int a = 0; a < d; ++a) free_dofs.push_back(d * i + a);
+    if (free_dofs.empty()) break;
+    MatX loads = MatX::Zero(static_cast<Eigen::Index>(free_dofs.size()), d);
+    for (size_t r = 0; r < free_dofs.size(); ++r)
+      loads(static_cast<Eigen::Index>(r), free_dofs[r] % d) = weight(free_dofs[r]);
+
+    SparseCholesky chol;
+    if (!chol.factorize(restrict_to(k_fem, free_dofs))) continue;  // not held: widen the support
+    const MatX u_fem = solve_all(chol, loads);
+    const SparseMatrix ks = restrict_to(k_springs, free_dofs), kv = restrict_to(k_volume, free_dofs);
+    // Each load counts by its relative error (w_a = 1 / |u_FEM,a|^2), the measure of `hooke compare`: unweighted,
+    // the sideways loads, which bend a slender body far more than the axial one compresses it, would decide c alone.
+    const VecX w = u_fem.colwise().squaredNorm().cwiseInverse().transpose();
+    auto relative_g = [&](const MatX& u_c) { return weighted_dot(u_c - u_fem, u_c - u_fem, w); };
+    auto displacements = [&](double c, MatX& u) {
+      if (!chol.factorize(SparseMatrix(c * ks + kv))) return false;
+      u = solve_all(chol, loads);
+      return true;
+    };
+    MatX u;
+    if (!displacements(1.0, u)) {
+      out.note = "the fitted springs' stiffness held at the bottom is not positive definite";
+      continue;
+    }
+    out.note.clear();
+    out.held_nodes = static_cast<int>(held.size());
+    out.error_before = std::sqrt(relative_g(u) / static_cast<double>(d));
+    double c = 1.0;
+    if (!has_volume) {
+      // u(c) = u(1) / c: the minimiser of sum_a w_a |u_a(1)/c - u_FEM,a|^2 over 1/c.
+      const double cross = weighted_dot(u, u_fem, w);
+      if (!(cross > 0.0)) {
+        out.note = "the springs move against the FEM under self-weight";
+        return out;
+      }
+      c = weighted_dot(u, u, w) / cross;
+    } else {
+      // Gauss-Newton on G(c), du/dc = -K(c)^-1 K_s u(c), with step halving.
+      double g = relative_g(u);
+      for (int it = 0; it < 50; ++it) {
+        const MatX j = -solve_all(chol, MatX(ks * u));
+        const double jj = weighted_dot(j, j, w);
+        if (!(jj > 0.0)) break;
+        const double full = -weighted_dot(j, u - u_fem, w) / jj;
+        double accepted_step = 0.0;
+        MatX trial;
+        for (double step = full; accepted_step == 0.0 && std::abs(step) > 1e-14 * c; step *= 0.5)
+          if (c + step > 0.0 && displacements(c + step, trial) && relative_g(trial) <= g) {
+            accepted_step = step;  // chol now holds K(c + step), the next Jacobian's matrix
+            c += step;
+            g = relative_g(trial);
+            u = trial;
+          }
+        ++out.gauss_newton;
+        if (accepted_step == 0.0 || std::abs(accepted_step) <= 1e-10 * c) break;
+      }
+    }
+    out.factor = c;
+    out.error_after = std::sqrt(relative_g(has_volume ? u : MatX(u / c)) / static_cast<double>(d));
+    return out;
+  }
+  if (out.note.empty()) out.note = "no support up to 20 % of the height holds the body";
+  return out;
+}
+
+}  // namespace hooke::calibrate
