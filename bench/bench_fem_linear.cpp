@@ -11,8 +11,8 @@
 #include <hooke/experiments/load_case.hpp>
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/mesh/generators.hpp>
+#include <hooke/model/free_map.hpp>
 #include <hooke/model/problem.hpp>
-#include <hooke/solve/detail/reduce.hpp>
 #include <memory>
 
 #include "bench_common.hpp"
@@ -57,7 +57,7 @@ void BM_Assembly(benchmark::State& state) {
 
 void BM_Factorization(benchmark::State& state) {
   Setup& s = bench::cached<Setup>(static_cast<int>(state.range(0)));
-  const solve::detail::FreeMap map(model::free_dofs(s.problem), s.model->dof_count());
+  const model::FreeMap map(model::free_dofs(s.problem), s.model->dof_count());
   const SparseMatrix k = map.restrict(s.model->hessian(s.model->rest_positions()));
   const VecX f = map.restrict(s.problem.external_force);
   double solve_seconds = 0.0;

@@ -4,21 +4,13 @@
 #include <hooke/core/sparse_cholesky.hpp>
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/mesh/measure.hpp>
+#include <hooke/model/free_map.hpp>
 #include <hooke/model/mass.hpp>
+#include <hooke/model/problem.hpp>
 #include <memory>
 
 namespace hooke::calibrate {
 namespace {
-
-// The rows and columns of `k` at the DOFs marked free.
-SparseMatrix restrict_to(const SparseMatrix& k, const std::vector<int>& free_dofs) {
-  std::vector<Triplet> t;
-  t.reserve(free_dofs.size());
-  for (size_t r = 0; r < free_dofs.size(); ++r) t.emplace_back(static_cast<int>(r), free_dofs[r], 1.0);
-  SparseMatrix p(static_cast<Eigen::Index>(free_dofs.size()), k.rows());
-  p.setFromTriplets(t.begin(), t.end());
-  return SparseMatrix(p * k * p.transpose());
-}
 
 // Nodes whose last coordinate is within `slab` of the lowest (slab = 0: the bottom face, 1e-6 of the diagonal).
 std::vector<int> held_nodes(const mesh::Mesh& m, double slab) {
@@ -71,9 +63,9 @@ StiffnessScale fit_self_weight_scale(const mesh::Mesh& mesh, const std::vector<m
   // K_FEM of the linear law (every law linearises to it at rest), the springs' K_s and the volume terms' K_V.
   std::vector<material::Material> linear = materials;
   for (auto& mat : linear) mat.law = material::Law::kLinear;
-  model::Model fem_model(d, rest);
-  fem_model.add(std::make_unique<fem::ElasticBlock>(mesh, linear));
-  const SparseMatrix k_fem = fem_model.hessian(rest);
+  auto fem_model = std::make_shared<model::Model>(d, rest);
+  fem_model->add(std::make_unique<fem::ElasticBlock>(mesh, linear));
+  const SparseMatrix k_fem = fem_model->hessian(rest);
   const SparseMatrix k_springs = linearised_stiffness(mesh, springs_part(springs));
   const bool has_volume = springs.volume_stiffness.size() > 0;
   const SparseMatrix k_volume =
@@ -85,21 +77,19 @@ StiffnessScale fit_self_weight_scale(const mesh::Mesh& mesh, const std::vector<m
   for (double slab : {0.0, 0.05, 0.10, 0.20}) {
     const std::vector<int> held = held_nodes(mesh, slab);
     if (!holds_rigidly(mesh, held)) continue;
-    std::vector<char> is_held(static_cast<size_t>(n), 0);
-    for (int i : held) is_held[static_cast<size_t>(i)] = 1;
-    std::vector<int> free_dofs;
-    for (int i = 0; i < n; ++i)
-      if (!is_held[static_cast<size_t>(i)])
-        for (int a = 0; a < d; ++a) free_dofs.push_back(d * i + a);
+    model::Problem held_body = model::make_problem(fem_model);
+    model::fix_nodes(held_body, held);
+    const model::FreeMap map(model::free_dofs(held_body), d * n);
+    const std::vector<int>& free_dofs = map.free;
     if (free_dofs.empty()) break;
     MatX loads = MatX::Zero(static_cast<Eigen::Index>(free_dofs.size()), d);
     for (size_t r = 0; r < free_dofs.size(); ++r)
       loads(static_cast<Eigen::Index>(r), free_dofs[r] % d) = weight(free_dofs[r]);
 
     SparseCholesky chol;
-    if (!chol.factorize(restrict_to(k_fem, free_dofs))) continue;  // not held: widen the support
+    if (!chol.factorize(map.restrict(k_fem))) continue;  // not held: widen the support
     const MatX u_fem = solve_all(chol, loads);
-    const SparseMatrix ks = restrict_to(k_springs, free_dofs), kv = restrict_to(k_volume, free_dofs);
+    const SparseMatrix ks = map.restrict(k_springs), kv = map.restrict(k_volume);
     // Each load counts by its relative error (w_a = 1 / |u_FEM,a|^2), the measure of `hooke compare`: unweighted,
     // the sideways loads, which bend a slender body far more than the axial one compresses it, would decide c alone.
     const VecX w = u_fem.colwise().squaredNorm().cwiseInverse().transpose();

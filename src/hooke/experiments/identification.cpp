@@ -11,8 +11,8 @@
 #include <hooke/io/vtu.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <hooke/mesh/topology.hpp>
+#include <hooke/model/free_map.hpp>
 #include <hooke/model/mass.hpp>
-#include <hooke/solve/detail/reduce.hpp>
 #include <nlohmann/json.hpp>
 #include <random>
 
@@ -191,7 +191,7 @@ std::vector<identify::ReferenceCase> fem_reference_cases(const mesh::Mesh& mesh,
     std::vector<int> free;
     for (int dof = 0; dof < static_cast<int>(rest.size()); ++dof)
       if (!e.fixed_dofs[static_cast<std::size_t>(dof)]) free.push_back(dof);
-    const solve::detail::FreeMap map(free, static_cast<int>(rest.size()));
+    const model::FreeMap map(free, static_cast<int>(rest.size()));
     SparseCholesky cholesky;
     if (!cholesky.factorize(map.restrict(stiffness)))
       throw SolverFailure("reference loads: the FEM stiffness with the " + std::string(1, kAxes[e.axis]) +

@@ -4,8 +4,8 @@
 #include <hooke/core/sparse_cholesky.hpp>
 #include <hooke/identify/force_basis.hpp>
 #include <hooke/identify/positions_objective.hpp>
+#include <hooke/model/free_map.hpp>
 #include <hooke/model/problem.hpp>
-#include <hooke/solve/detail/reduce.hpp>
 #include <limits>
 
 namespace hooke::identify {
@@ -79,7 +79,7 @@ double PositionsObjective::value(const VecX& theta, VecX* gradient) {
     if (!gradient) continue;
     model::Problem problem = model::make_problem(model);
     problem.fixed_dofs = ref.fixed_dofs;
-    const solve::detail::FreeMap free(model::free_dofs(problem), model->dof_count());
+    const model::FreeMap free(model::free_dofs(problem), model->dof_count());
     SparseCholesky cholesky;
     if (!cholesky.factorize(free.restrict(model->hessian(result.positions))))
       return std::numeric_limits<double>::infinity();

@@ -2,8 +2,8 @@
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
+#include <hooke/model/free_map.hpp>
 #include <hooke/model/hessian_assembly.hpp>
-#include <hooke/solve/detail/reduce.hpp>
 #include <hooke/solve/detail/sparse_ops.hpp>
 #include <hooke/solve/stability.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
@@ -27,7 +27,7 @@ std::string format_double(double v) {
 // (nodes in no element) are held with the fixed ones.
 class StaticObjective final : public NewtonObjective {
  public:
-  StaticObjective(const model::Problem& problem, const detail::FreeMap& map, SolveReport& report)
+  StaticObjective(const model::Problem& problem, const model::FreeMap& map, SolveReport& report)
       : m_problem(problem), m_assembly(*problem.model), m_fixed(problem.model->dof_count(), 1), m_report(report) {
     for (const int i : map.free) m_fixed[static_cast<size_t>(i)] = 0;
     const VecX& rest = problem.model->rest_positions();
@@ -64,7 +64,7 @@ class StaticObjective final : public NewtonObjective {
   const std::vector<int>& diagonal() const override { return m_assembly.diagonal(); }
 
   // The exact tangent restricted to the free DOFs (for the stability test and the smallest eigenvalue).
-  SparseMatrix free_tangent(const VecX& z, const detail::FreeMap& map) {
+  SparseMatrix free_tangent(const VecX& z, const model::FreeMap& map) {
     const auto t0 = Clock::now();
     m_assembly.assemble(z, false, m_problem.interaction_or_null());
     SparseMatrix h = map.restrict(m_assembly.matrix());
@@ -83,11 +83,11 @@ class StaticObjective final : public NewtonObjective {
 
 // Newton at one load factor from x (updated in place), and the stability test, over one objective.
 struct LoadStepper {
-  LoadStepper(StaticObjective& f, const detail::FreeMap& free, SolveReport& r, const NewtonOptions& options)
+  LoadStepper(StaticObjective& f, const model::FreeMap& free, SolveReport& r, const NewtonOptions& options)
       : objective(f), map(free), report(r), newton(options), stability_factor(options.backend) {}
 
   StaticObjective& objective;
-  const detail::FreeMap& map;
+  const model::FreeMap& map;
   SolveReport& report;
   NewtonSolver newton;
   SparseCholesky stability_factor;
@@ -172,7 +172,7 @@ StaticResult linear_static(const model::Problem& problem, const LinearOptions& o
   StaticResult result;
   SolveReport& rep = result.report;
   const model::Model& m = *problem.model;
-  const detail::FreeMap map(model::free_dofs(problem), m.dof_count());
+  const model::FreeMap map(model::free_dofs(problem), m.dof_count());
   rep.free_dofs = map.size();
   VecX x = model::initial_positions(problem);
   const VecX u_prescribed = x - m.rest_positions();
@@ -227,7 +227,7 @@ StaticResult static_equilibrium(const model::Problem& problem, const StaticOptio
   StaticResult result;
   SolveReport& rep = result.report;
   const model::Model& m = *problem.model;
-  const detail::FreeMap map(model::free_dofs(problem), m.dof_count());
+  const model::FreeMap map(model::free_dofs(problem), m.dof_count());
   rep.free_dofs = map.size();
   rep.reference_force = problem.external_force.norm();
   StaticObjective objective(problem, map, rep);
