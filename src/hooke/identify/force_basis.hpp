@@ -20,6 +20,12 @@ class ForceBasis {
   /// Adds |column|^2 over the rows where `row_mask` is 1 to `out` (layout.size()).
   void add_squared_column_norms(const std::vector<char>& row_mask, Eigen::Ref<VecX> out) const;
 
+  /// The column blocks: per spring (l - l0) u and u (the latter only with offsets), #S x dim; per tet the four
+  /// corners' (V - V0)/V0^2 dV/dx_a, #T x 12 (empty without volume terms).
+  const RowMatX& stretch() const { return m_stretch; }
+  const RowMatX& direction() const { return m_direction; }
+  const RowMatX& volume() const { return m_volume; }
+
  private:
   const ParameterLayout& m_layout;
   int m_dim;
