@@ -22,8 +22,9 @@ struct IdentifyCli {
   std::string law = "linear", params = "auto", objective = "forces", compare = "auto", output, report, write_reference;
   std::vector<std::string> reference{"fem"}, held_out_reference;
   experiments::ReferenceLoads loads;
-  double regularization = 0.0, stiffness_floor = 1e-3, density = 1000.0;
+  double regularization = 0.0, stiffness_floor = 1e-3, density = 1000.0, tolerance = 1e-9;
   int iterations = 30;
+  bool negative_volume = false;
 };
 
 identify::IdentifyOptions identify_options(const IdentifyCli& o, const mesh::Mesh& mesh) {
@@ -34,6 +35,8 @@ identify::IdentifyOptions identify_options(const IdentifyCli& o, const mesh::Mes
   options.regularization = o.regularization;
   options.stiffness_floor = o.stiffness_floor;
   options.position_iterations = o.iterations;
+  options.least_squares.tolerance = o.tolerance;
+  options.negative_volume = o.negative_volume;
   if (o.regularization < 0.0 || o.stiffness_floor < 0.0 || o.stiffness_floor >= 1.0)
     throw InvalidArgument("--regularize must be >= 0 and --stiffness-floor in [0, 1)");
   return options;
@@ -156,6 +159,11 @@ Action add_identify_command(CLI::App& app) {
   cmd->add_option("--held-out", o->loads.held_out, "fem: random load cases kept out of the fit")->capture_default_str();
   cmd->add_option("--seed", o->loads.seed, "fem: seed of the random cases")->capture_default_str();
   cmd->add_option("--regularize", o->regularization, "Weight of the penalty toward the mean stiffness (Sec. 2)")
+      ->capture_default_str();
+  cmd->add_flag("--negative-volume", o->negative_volume,
+                "Let volume terms be negative (needed for nu < 1/4: a spring network alone has nu = 1/4)");
+  cmd->add_option("--tolerance", o->tolerance,
+                  "forces: stop when the projected gradient is this fraction of its start (1e-2 for large meshes)")
       ->capture_default_str();
   cmd->add_option("--stiffness-floor", o->stiffness_floor, "Smallest k as a fraction of the mean k")
       ->capture_default_str();

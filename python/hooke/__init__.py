@@ -106,7 +106,8 @@ def reproduce(paper, out_dir, meshes=None):
 
 
 def identify(mesh, material, params="auto", objective="forces", references=None, strain=0.01, held_out=4, seed=2007,
-             regularize=0.0, stiffness_floor=1e-3, iterations=30, compare="auto", density=1000.0):
+             regularize=0.0, stiffness_floor=1e-3, iterations=30, compare="auto", density=1000.0, tolerance=1e-9,
+             negative_volume=False):
     """Identifies a spring model from reference deformations (Lloyd et al. 2007: Eq. 2 `objective="forces"`, Eq. 1
     `objective="positions"`), as `hooke identify` does (docs/methods/identification.md).
 
@@ -118,6 +119,9 @@ def identify(mesh, material, params="auto", objective="forces", references=None,
                 "fixed": (N,) 1.0 at supports, "held_out": bool, "name": str} (measured data)
     regularize  weight of the penalty toward the mean stiffness; stiffness_floor: smallest k / mean k
     iterations  Eq. 1 iterations at most; compare: the analytic model measured beside it ("auto": any-nu-tet)
+    tolerance   Eq. 2 stops when its projected gradient is this fraction of its start, in (0, 1); 1e-2 suffices
+                for large meshes (the force residual is then within 0.3 % of its minimum)
+    negative_volume  let volume terms be negative: needed for nu < 1/4 (a spring network alone has nu = 1/4)
 
     Returns (model, report): a hooke.Model (method "identified", ready for hooke.Problem and write_model) and the
     report as a dict (per case the identified and analytic relative L2 errors, RMS training and held-out errors,
@@ -130,7 +134,8 @@ def identify(mesh, material, params="auto", objective="forces", references=None,
         raise TypeError("identify: material must be a hooke.Material")
     model, report = _hooke._identify(mesh, material, params, objective, references, float(strain), int(held_out),
                                      int(seed), float(regularize), float(stiffness_floor), int(iterations), compare,
-                                     float(density))
+                                     float(density), float(tolerance),
+                                     bool(negative_volume))
     return model, json.loads(report)
 
 

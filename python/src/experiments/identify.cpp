@@ -40,7 +40,8 @@ void define_identify(py::module_& m) {
       "_identify",
       [](const mesh::Mesh& mesh, const material::Material& material, const std::string& params,
          const std::string& objective, const py::object& references, double strain, int held_out, unsigned seed,
-         double regularize, double stiffness_floor, int iterations, const std::string& compare, double density) {
+         double regularize, double stiffness_floor, int iterations, const std::string& compare, double density,
+         double tolerance, bool negative_volume) {
         identify::IdentifyOptions options;
         options.parameters =
             params == "auto" ? experiments::default_parameters(mesh) : identify::parameters_from_name(params);
@@ -48,6 +49,8 @@ void define_identify(py::module_& m) {
         options.regularization = regularize;
         options.stiffness_floor = stiffness_floor;
         options.position_iterations = iterations;
+        options.least_squares.tolerance = tolerance;
+        options.negative_volume = negative_volume;
         const std::string analytic = compare == "auto" ? experiments::default_analytic_method(mesh) : compare;
         std::vector<identify::ReferenceCase> cases;
         if (!references.is_none()) {
@@ -68,7 +71,7 @@ void define_identify(py::module_& m) {
       },
       py::arg("mesh"), py::arg("material"), py::arg("params"), py::arg("objective"), py::arg("references"),
       py::arg("strain"), py::arg("held_out"), py::arg("seed"), py::arg("regularize"), py::arg("stiffness_floor"),
-      py::arg("iterations"), py::arg("compare"), py::arg("density"));
+      py::arg("iterations"), py::arg("compare"), py::arg("density"), py::arg("tolerance"), py::arg("negative_volume"));
 }
 
 }  // namespace hooke::python

@@ -3,10 +3,10 @@
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
 #include <hooke/core/name_table.hpp>
-#include <hooke/identify/force_basis.hpp>
 #include <hooke/identify/identify.hpp>
 #include <hooke/identify/positions_objective.hpp>
 #include <hooke/identify/scale_fit.hpp>
+#include <hooke/identify/stacked_forces.hpp>
 #include <limits>
 #include <memory>
 
@@ -15,71 +15,6 @@ namespace {
 
 constexpr NameTable<Objective, 2> kObjectives{"identification objective",
                                               {{{Objective::kForces, "forces"}, {Objective::kPositions, "positions"}}}};
-
-// The training cases' U(p_ref) stacked (rows: every case's DOFs, those of supports masked out), Eq. 2.
-class StackedForceOperator final : public LinearOperator {
- public:
-  StackedForceOperator(const ParameterLayout& layout, const std::vector<const ReferenceCase*>& cases)
-      : m_layout(layout), m_dofs(cases.empty() ? 0 : cases.front()->positions.size()) {
-    for (const ReferenceCase* c : cases) {
-      m_bases.emplace_back(layout, c->positions);
-      std::vector<char> mask(c->fixed_dofs.size());
-      for (std::size_t k = 0; k < mask.size(); ++k) mask[k] = c->fixed_dofs[k] ? 0 : 1;
-      m_masks.push_back(std::move(mask));
-    }
-    m_scratch.assign(m_bases.size(), VecX(m_dofs));
-  }
-  Eigen::Index rows() const override { return m_dofs * static_cast<Eigen::Index>(m_bases.size()); }
-  Eigen::Index cols() const override { return m_layout.size(); }
-  void apply(const VecX& x, VecX& y) const override {
-    y.resize(rows());
-    const int n = static_cast<int>(m_bases.size());
-#pragma omp parallel for schedule(dynamic) if (m_dofs * n > 200000)
-    for (int c = 0; c < n; ++c) {
-      auto block = y.segment(c * m_dofs, m_dofs);
-      m_bases[c].apply(x, block);
-      for (Eigen::Index k = 0; k < m_dofs; ++k)
-        if (!m_masks[c][k]) block(k) = 0.0;
-    }
-  }
-  void apply_transpose(const VecX& y, VecX& x) const override {
-    const int n = static_cast<int>(m_bases.size());
-    x.setZero(cols());
-#pragma omp parallel if (m_dofs * n > 200000)
-    {
-      VecX part(cols()), sum = VecX::Zero(cols());
-#pragma omp for schedule(dynamic)
-      for (int c = 0; c < n; ++c) {
-        VecX& masked = m_scratch[c];  // y with the supports' rows zeroed; one buffer per case, one thread per case
-        for (Eigen::Index k = 0; k < m_dofs; ++k) masked(k) = m_masks[c][k] ? y(c * m_dofs + k) : 0.0;
-        m_bases[c].apply_transpose(masked, part);
-        sum += part;
-      }
-#pragma omp critical
-      x += sum;
-    }
-  }
-  VecX squared_column_norms() const override {
-    VecX out = VecX::Zero(cols());
-    for (std::size_t c = 0; c < m_bases.size(); ++c) m_bases[c].add_squared_column_norms(m_masks[c], out);
-    return out;
-  }
-  // b: the applied forces on the free DOFs, stacked like the rows.
-  VecX right_hand_side(const std::vector<const ReferenceCase*>& cases) const {
-    VecX b = VecX::Zero(rows());
-    for (std::size_t c = 0; c < cases.size(); ++c)
-      for (Eigen::Index k = 0; k < m_dofs; ++k)
-        if (m_masks[c][k]) b(static_cast<Eigen::Index>(c) * m_dofs + k) = cases[c]->external_force(k);
-    return b;
-  }
-
- private:
-  const ParameterLayout& m_layout;
-  Eigen::Index m_dofs;
-  std::vector<ForceBasis> m_bases;
-  std::vector<std::vector<char>> m_masks;
-  mutable std::vector<VecX> m_scratch;
-};
 
 // [A; W (theta_g - mean theta_g)]: Lloyd's penalty toward the mean stiffness (Sec. 2), per group of unknowns.
 class RegularisedOperator final : public LinearOperator {
@@ -160,13 +95,20 @@ VecX fit_forces(const ParameterLayout& layout, const std::vector<const Reference
   return solve_bounded_least_squares(a, bb, lower, start, options.least_squares, &report);
 }
 
-// Eq. 2 with every spring kept at or above stiffness_floor x the mean k. The mean comes from a rough first fit
-// (tolerance 1e-2: a mean is settled long before the single springs are), then the fit itself with the floor.
+// Eq. 2 with every spring kept at or above stiffness_floor x the mean k. With a start model, the fit starts from
+// its parameters and the mean is its mean k. Without one, the mean comes from a rough first fit (tolerance 1e-2: a
+// mean is settled long before the single springs are), then the fit itself with the floor.
 VecX fit_forces_with_floor(const ParameterLayout& layout, const std::vector<const ReferenceCase*>& cases,
                            const IdentifyOptions& options, BoundedLeastSquaresReport& report) {
   VecX lower = layout.lower_bounds();
   const int ns = layout.spring_count();
-  if (ns == 0 || !(options.stiffness_floor > 0.0)) return fit_forces(layout, cases, options, lower, {}, report);
+  VecX start;
+  if (options.start_model && layout.offset_count() == 0) start = parameters_of(layout, *options.start_model);
+  if (ns == 0 || !(options.stiffness_floor > 0.0)) return fit_forces(layout, cases, options, lower, start, report);
+  if (start.size() && start.head(ns).mean() > 0.0) {
+    lower.head(ns).setConstant(options.stiffness_floor * start.head(ns).mean());
+    return fit_forces(layout, cases, options, lower, start.cwiseMax(lower), report);
+  }
   IdentifyOptions rough = options;
   rough.least_squares.tolerance = std::max(options.least_squares.tolerance, 1e-2);
   BoundedLeastSquaresReport first;
@@ -201,8 +143,9 @@ VecX fit_positions(const mesh::Mesh& mesh, const ParameterLayout& layout, const 
   // the start: the Eq. 2 fit or start_model, whichever has the smaller G; springs kept at or above the floor
   const int ns = layout.spring_count();
   const double floor = options.stiffness_floor * start.head(ns).mean();
+  const VecX lower = layout.lower_bounds();
   const auto within_bounds = [&](VecX theta) {
-    theta = theta.cwiseMax(0.0);
+    theta = theta.cwiseMax(lower);
     theta.head(ns) = theta.head(ns).cwiseMax(floor);
     return theta;
   };
@@ -222,11 +165,12 @@ VecX fit_positions(const mesh::Mesh& mesh, const ParameterLayout& layout, const 
     }
   }
   if (!std::isfinite(g)) throw SolverFailure("identification: the start has no stable equilibrium on a training case");
-  // scaled variables theta = s .* z, s the start (the group's mean where it is 0), so that z ~ 1
-  VecX s = theta;
+  // scaled variables theta = s .* z, s = |start| (the group's mean magnitude where it is 0), so that |z| ~ 1
+  VecX s = theta.cwiseAbs();
+  const double volume_scale = s.size() > ns ? std::max(s.tail(s.size() - ns).mean(), 1e-30) : 1.0;
   for (Eigen::Index j = 0; j < s.size(); ++j)
-    if (!(s(j) > 0.0)) s(j) = j < ns ? theta.head(ns).mean() : std::max(theta.tail(s.size() - ns).mean(), 1e-30);
-  VecX z_lower = VecX::Zero(s.size());
+    if (!(s(j) > 0.0)) s(j) = j < ns ? s.head(ns).mean() : volume_scale;
+  VecX z_lower = lower.cwiseQuotient(s);  // 0 or -infinity
   z_lower.head(ns) = floor * s.head(ns).cwiseInverse();
   VecX z = theta.cwiseQuotient(s), gz = gradient.cwiseProduct(s);
   report.position_history.push_back(g);
@@ -320,6 +264,9 @@ Identification identify_scale(const mesh::Mesh& mesh, const std::vector<Referenc
 Identification identify(const mesh::Mesh& mesh, const std::vector<ReferenceCase>& cases,
                         const IdentifyOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
+  if (!(options.least_squares.tolerance > 0.0 && options.least_squares.tolerance < 1.0))
+    throw InvalidArgument("identification: the Eq. 2 tolerance must be in (0, 1), got " +
+                          std::to_string(options.least_squares.tolerance));
   if (options.parameters == Parameters::kScale) return identify_scale(mesh, cases, options, t0);
   const VecX rest_positions = mesh::flat_positions(mesh);
   for (const auto& c : cases) validate_reference(c, rest_positions.size());
@@ -330,6 +277,7 @@ Identification identify(const mesh::Mesh& mesh, const std::vector<ReferenceCase>
 
   Identification out;
   out.layout = parameter_layout(mesh, options.parameters);
+  out.layout.negative_volume = options.negative_volume;
   out.theta = fit_forces_with_floor(out.layout, training, options, out.report.least_squares);
   if (rest_lengths) {  // fold the offsets into rest lengths, then refit k and k_V with them
     const calibrate::SpringModel fitted = spring_model(out.layout, out.theta, &out.report.clamped_rest_lengths);

@@ -32,6 +32,9 @@ struct IdentifyOptions {
   /// Every spring keeps at least this fraction of the mean identified k (a spring at k = 0 can leave a mechanism,
   /// which has no equilibrium); 0 allows k = 0. Default 1e-3.
   double stiffness_floor = 1e-3;
+  /// Volume terms may be negative (ParameterLayout::negative_volume): needed to reach a reference with nu < 1/4.
+  /// Eq. 1 rejects any step whose model has no stable equilibrium on a training case. Default false (k_V >= 0).
+  bool negative_volume = false;
   BoundedLeastSquaresOptions least_squares;  ///< the Eq. 2 solver (tolerance 1e-9 relative)
   int position_iterations = 30;              ///< positions: projected-gradient iterations at most, default 30
   /// positions: stop when the relative projected gradient falls below this, default 1e-6

@@ -23,6 +23,8 @@ std::string_view parameters_name(Parameters parameters) { return kNames.name(par
 VecX ParameterLayout::lower_bounds() const {
   VecX lower = VecX::Zero(size());
   lower.tail(offset_count()).setConstant(-std::numeric_limits<double>::infinity());
+  if (negative_volume)
+    lower.segment(spring_count(), volume_count()).setConstant(-std::numeric_limits<double>::infinity());
   return lower;
 }
 
@@ -69,7 +71,8 @@ calibrate::SpringModel spring_model(const ParameterLayout& layout, const VecX& t
   }
   if (nt) {
     out.volume_tets = layout.tets;
-    out.volume_stiffness = theta.segment(ns, nt).cwiseMax(0.0);
+    out.volume_stiffness = theta.segment(ns, nt);
+    if (!layout.negative_volume) out.volume_stiffness = out.volume_stiffness.cwiseMax(0.0);
     out.rest_volume = layout.rest_volume;
   }
   if (clamped) *clamped = outside;

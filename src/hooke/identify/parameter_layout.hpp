@@ -31,13 +31,16 @@ struct ParameterLayout {
   VecX rest_length;                       ///< l0 of the k columns per spring, m (the rest edge lengths unless refitted)
   RowMatXi tets;                          ///< tets with a volume term (#T x 4; empty without volume terms)
   VecX rest_volume;                       ///< V0 per tet, m^3
+  /// k_V may be negative. A spring network alone has Poisson's ratio 1/4 (Cauchy's relation lambda = mu), so below
+  /// nu = 1/4 the volume terms must take stiffness away (docs/methods/any_nu.md); default false (k_V >= 0)
+  bool negative_volume = false;
 
   int spring_count() const { return static_cast<int>(pairs.size()); }
   int volume_count() const { return static_cast<int>(tets.rows()); }
   /// Offsets delta (= spring_count() with kSpringsVolumeRestLength, else 0).
   int offset_count() const { return parameters == Parameters::kSpringsVolumeRestLength ? spring_count() : 0; }
   int size() const { return spring_count() + volume_count() + offset_count(); }
-  /// 0 for k and k_V (no negative springs), -infinity for the offsets.
+  /// 0 for k and k_V (no negative springs), -infinity for the offsets and, with negative_volume, for k_V.
   VecX lower_bounds() const;
 };
 
@@ -46,7 +49,8 @@ struct ParameterLayout {
 ParameterLayout parameter_layout(const mesh::Mesh& mesh, Parameters parameters);
 
 /// The spring model of theta. With offsets, each spring's rest length is l0 = L - delta/k, kept in [L/2, 2L]
-/// (l0 = L where k = 0); `clamped` (if not null) receives how many springs were outside that range.
+/// (l0 = L where k = 0); `clamped` (if not null) receives how many springs were outside that range. Negative k are
+/// taken as 0, and negative k_V too unless layout.negative_volume.
 /// @pre theta.size() == layout.size()
 calibrate::SpringModel spring_model(const ParameterLayout& layout, const VecX& theta, int* clamped = nullptr);
 
