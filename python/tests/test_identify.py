@@ -48,3 +48,19 @@ def test_identify_refuses_bad_references():
     with pytest.raises(ValueError, match="force"):
         hooke.identify(mesh, hooke.Material(14630.0, 0.3),
                        references=[{"displacement": np.zeros((mesh.node_count, 3)), "force": np.zeros((3, 3))}])
+
+
+def test_identify_passes_tolerance_and_negative_volume_through():
+    mesh = cylinder()
+    material = hooke.Material(14630.0, 0.1)
+    with pytest.raises(ValueError, match="tolerance"):
+        hooke.identify(mesh, material, held_out=0, tolerance=0.0)
+    loose, loose_report = hooke.identify(mesh, material, held_out=0, tolerance=1e-2)
+    tight, tight_report = hooke.identify(mesh, material, held_out=0)
+    assert loose_report["least_squares"]["cg_iterations"] < tight_report["least_squares"]["cg_iterations"]
+    assert tight_report["tolerance"] == 1e-9 and not tight_report["negative_volume"]
+    assert loose.volume_stiffness.min() >= 0.0
+    # at nu = 0.1 the force fit wants negative volume terms (a spring network alone is a nu = 1/4 solid)
+    free, free_report = hooke.identify(mesh, material, held_out=0, negative_volume=True)
+    assert free.volume_stiffness.min() < 0.0
+    assert free_report["force_residual"] < tight_report["force_residual"]

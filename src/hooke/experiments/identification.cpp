@@ -396,6 +396,8 @@ std::string identification_report_json(const IdentificationStudy& study, const i
                             {"parameters", identify::parameters_name(options.parameters)},
                             {"regularization", options.regularization},
                             {"stiffness_floor", options.stiffness_floor},
+                            {"negative_volume", options.negative_volume},
+                            {"tolerance", options.least_squares.tolerance},
                             {"analytic_method", study.analytic_method},
                             {"cases", cases},
                             {"training_relative_l2_rms", study.training_error},
