@@ -60,3 +60,28 @@ run_fails(bad_objective "unknown identification objective 'energy'" ${OUT}/x.jso
 run_fails(bad_strain "strain must be positive" ${OUT}/x.json identify ${mesh} --young 14630 --poisson 0.3
           --strain -1 -o ${OUT}/x.json)
 run_fails(nu_half "oisson" ${OUT}/x.json identify ${mesh} --young 14630 --poisson 0.5 -o ${OUT}/x.json)
+run_fails(bad_tolerance "tolerance must be in \\(0, 1\\)" ${OUT}/x.json identify ${mesh} --young 14630 --poisson 0.3
+          --tolerance 0 -o ${OUT}/x.json)
+
+# Below nu = 1/4, --negative-volume lets the force fit take k_V < 0, and the report says which options ran.
+run_ok(identify_negative identify ${mesh} --young 14630 --poisson 0.1 --held-out 0 --negative-volume --tolerance 1e-2
+       --report ${OUT}/negative.json -o ${OUT}/negative_model.json)
+file(READ ${OUT}/negative.json report)
+string(JSON negative GET "${report}" negative_volume)
+string(JSON tolerance GET "${report}" tolerance)
+if(NOT negative OR NOT tolerance EQUAL 0.01)
+  message(FATAL_ERROR "negative.json: negative_volume ${negative}, tolerance ${tolerance}")
+endif()
+file(READ ${OUT}/negative_model.json json)
+string(JSON terms LENGTH "${json}" volume_terms)
+set(negatives 0)
+math(EXPR last "${terms} - 1")
+foreach(t RANGE ${last})
+  string(JSON kv GET "${json}" volume_terms ${t} 4)
+  if(kv LESS 0)
+    math(EXPR negatives "${negatives} + 1")
+  endif()
+endforeach()
+if(negatives EQUAL 0)
+  message(FATAL_ERROR "--negative-volume at nu = 0.1: no negative volume term in ${terms}")
+endif()
