@@ -163,7 +163,7 @@ Action add_identify_command(CLI::App& app) {
   cmd->add_flag("--negative-volume", o->negative_volume,
                 "Let volume terms be negative (needed for nu < 1/4: a spring network alone has nu = 1/4)");
   cmd->add_option("--tolerance", o->tolerance,
-                  "forces: stop when the projected gradient is this fraction of its start (1e-2 for large meshes)")
+                  "Eq. 2: stop when the projected gradient is this fraction of U^T f (1e-2 for large meshes)")
       ->capture_default_str();
   cmd->add_option("--stiffness-floor", o->stiffness_floor, "Smallest k as a fraction of the mean k")
       ->capture_default_str();

@@ -119,7 +119,7 @@ def identify(mesh, material, params="auto", objective="forces", references=None,
                 "fixed": (N,) 1.0 at supports, "held_out": bool, "name": str} (measured data)
     regularize  weight of the penalty toward the mean stiffness; stiffness_floor: smallest k / mean k
     iterations  Eq. 1 iterations at most; compare: the analytic model measured beside it ("auto": any-nu-tet)
-    tolerance   Eq. 2 stops when its projected gradient is this fraction of its start, in (0, 1); 1e-2 suffices
+    tolerance   Eq. 2 stops when its projected gradient is this fraction of U^T f, in (0, 1); 1e-2 suffices
                 for large meshes (the force residual is then within 0.3 % of its minimum)
     negative_volume  let volume terms be negative: needed for nu < 1/4 (a spring network alone has nu = 1/4)
 
