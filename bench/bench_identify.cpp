@@ -59,7 +59,7 @@ void BM_IdentifyForces(benchmark::State& state) {
   const Reference& r = bench::cached<Reference>(static_cast<int>(state.range(0)));
   identify::IdentifyOptions options;
   options.parameters = identify::Parameters::kSpringsVolume;
-  options.least_squares.tolerance = 1e-2;  // the force residual is then within 0.3 % of its minimum (see below)
+  options.least_squares.tolerance = 1e-2;  // residual within 0.3 % of its minimum (header)
   if (const char* t = std::getenv("HOOKE_LSQ_TOL")) options.least_squares.tolerance = std::atof(t);
   if (const char* w = std::getenv("HOOKE_REG")) options.regularization = std::atof(w);
   if (const char* c = std::getenv("HOOKE_CG")) options.least_squares.max_cg_iterations = std::atoi(c);

@@ -29,18 +29,18 @@ struct IdentifyOptions {
   /// mean(theta_g)|^2 for the springs and for the volume terms, c the RMS column norm of U in the group, so w is
   /// dimensionless (w = 1 pulls as hard as one typical data row). Default 0 (none).
   double regularization = 0.0;
-  /// Every spring keeps at least this fraction of the mean identified k (a spring at k = 0 can leave a mechanism,
-  /// which has no equilibrium); 0 allows k = 0. Default 1e-3.
+  /// Every spring keeps at least this fraction of the mean k: start_model's when given, else a rough first fit's (a
+  /// spring at k = 0 can leave a mechanism, which has no equilibrium); 0 allows k = 0. Default 1e-3.
   double stiffness_floor = 1e-3;
   /// Volume terms may be negative (ParameterLayout::negative_volume): needed to reach a reference with nu < 1/4.
   /// Eq. 1 rejects any step whose model has no stable equilibrium on a training case. Default false (k_V >= 0).
   bool negative_volume = false;
-  BoundedLeastSquaresOptions least_squares;  ///< the Eq. 2 solver (tolerance 1e-9 relative)
+  BoundedLeastSquaresOptions least_squares;  ///< the Eq. 2 solver (tolerance 1e-9 relative; must be in (0, 1))
   int position_iterations = 30;              ///< positions: projected-gradient iterations at most, default 30
   /// positions: stop when the relative projected gradient falls below this, default 1e-6
   double position_tolerance = 1e-6;
-  /// positions: a second start, e.g. an analytic model: Eq. 1 starts from whichever of it (its k and k_V on the
-  /// layout, kept within the bounds) and the Eq. 2 fit has the smaller G. None by default.
+  /// A start, e.g. an analytic model (its k and k_V on the layout, kept within the bounds). Eq. 2 starts from it
+  /// (not with rest lengths); Eq. 1 starts from whichever of it and the Eq. 2 fit has the smaller G. None by default.
   std::optional<calibrate::SpringModel> start_model;
   /// positions: the static solves (defaults; stability checks off, a warm start from the previous equilibrium)
   solve::StaticOptions statics;
@@ -74,14 +74,15 @@ struct Identification {
 };
 
 /// Identifies a spring model on `mesh` from the cases not held out. Forces: Eq. 2 as a bounded least-squares
-/// problem with the rows of every training case's free DOFs (refitted with k >= stiffness_floor x mean k when a
-/// spring fell below that); with rest lengths, the fitted l0 are then fixed and k,
+/// problem with the rows of every training case's free DOFs, every k >= stiffness_floor x the mean k; with rest
+/// lengths, the fitted l0 are then fixed and k,
 /// k_V fitted again, so that the model is exactly the one measured. Positions: Eq. 1 from there by projected
 /// gradients with the Barzilai-Borwein step, the gradient by the adjoint of each equilibrium (PositionsObjective).
 /// @param mesh   validated tet or triangle mesh, m
 /// @param cases  reference cases on mesh's nodes (validate_reference), at least one not held out; the rest state
 ///               (no load, no support) is added as a case with rest lengths
-/// @throws InvalidArgument for bad cases; SolverFailure when an Eq. 1 start has no equilibrium
+/// @throws InvalidArgument for bad cases or a tolerance outside (0, 1); SolverFailure when an Eq. 1 start has no
+/// equilibrium
 Identification identify(const mesh::Mesh& mesh, const std::vector<ReferenceCase>& cases,
                         const IdentifyOptions& options = {});
 

@@ -100,7 +100,7 @@ void StackedForceOperator::apply_group(const Group& g, const VecX& theta, double
       }
     }
   }
-  for (int t = 0; t < nt; ++t) {
+  for (int t = 0; t < nt; ++t) {  // volume terms exist on tets only: 3 components per node
     const double kv = theta(ns + t);
     const double* a = &g.volume(t, 0);
     for (int corner = 0; corner < 4; ++corner) {
