@@ -1,5 +1,6 @@
-// hooke bench [--sizes 1k,10k,100k] [--steps N] [-o DIR]: the dynamics benchmark table (ms/step per integrator
-// and mesh, spring-force throughput beside the in-run bandwidth bound). Bullet's ratio needs the Google
+// hooke bench [--sizes 1k,10k,100k] [--methods M,...] [--poisson NU] [--steps N] [--drag M] [--integrators R,...]
+// [-o DIR]: the dynamics benchmark table (ms/step per integrator, mesh and model with its error against a converged
+// implicit step, spring-force throughput beside the in-run bandwidth bound). Bullet's ratio needs the Google
 // Benchmark peer: build/release/bench/hooke_bench --benchmark_filter=Peer.
 #include <cstdio>
 #include <filesystem>
@@ -19,12 +20,12 @@ namespace {
 
 struct BenchCli {
   std::vector<std::string> sizes{"1k", "10k"};
-  int steps = 40;
+  experiments::DynamicsBenchmarkOptions options;
   std::string out_dir;
 };
 
 int run_bench(const BenchCli& o) {
-  experiments::DynamicsBenchmarkOptions options;
+  experiments::DynamicsBenchmarkOptions options = o.options;
   options.sizes.clear();
   for (const std::string& s : o.sizes) {
     if (s == "1k")
@@ -36,10 +37,10 @@ int run_bench(const BenchCli& o) {
     else
       throw InvalidArgument("--sizes takes 1k, 10k and 100k, not '" + s + "'");
   }
-  options.steps = o.steps;
   const experiments::DynamicsBenchmarkReport report = experiments::run_dynamics_benchmark(options);
   const std::string markdown = experiments::dynamics_benchmark_markdown(report);
-  std::printf("hooke bench: tet cylinders, lloyd-tet springs, gravity, bottom clamped\n\n%s", markdown.c_str());
+  std::printf("hooke bench: tet cylinders, nu = %g, gravity, bottom clamped, the top's centre dragged %g mm\n\n%s",
+              options.poisson, 1e3 * options.drag, markdown.c_str());
   std::printf("\nBullet's soft body at the same dt: build/release/bench/hooke_bench --benchmark_filter=Peer\n");
   if (!o.out_dir.empty()) {
     const std::filesystem::path dir(o.out_dir);
@@ -54,10 +55,13 @@ int run_bench(const BenchCli& o) {
                               {"bandwidth_fraction", t.bandwidth_fraction}});
     for (const auto& t : report.steps)
       j["steps"].push_back({{"nodes", t.nodes},
+                            {"method", t.method},
                             {"integrator", t.integrator},
                             {"dt", t.dt},
                             {"median_ms", t.median_ms},
                             {"p95_ms", t.p95_ms},
+                            {"p99_ms", t.p99_ms},
+                            {"steps_above_tolerance", t.not_converged},
                             {"iterations", t.iterations},
                             {"linear_iterations", t.linear_iterations},
                             {"error_vs_converged", t.error_vs_converged}});
@@ -74,7 +78,17 @@ Action add_bench_command(CLI::App& app) {
   auto o = std::make_shared<BenchCli>();
   CLI::App* cmd = app.add_subcommand("bench", "Dynamics benchmark: ms/step per integrator and mesh size");
   cmd->add_option("--sizes", o->sizes, "Cylinder sizes: 1k, 10k, 100k")->delimiter(',')->capture_default_str();
-  cmd->add_option("--steps", o->steps, "Timed steps per integrator")->capture_default_str();
+  cmd->add_option("--methods", o->options.methods, "Calibration methods of the models, one row set each")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--poisson", o->options.poisson, "Poisson's ratio of every model")->capture_default_str();
+  cmd->add_option("--steps", o->options.steps, "Timed steps per integrator")->capture_default_str();
+  cmd->add_option("--drag", o->options.drag,
+                  "The probe's final offset along x, m (reached at half the run, then held; 0: no probe)")
+      ->capture_default_str();
+  cmd->add_option("--integrators", o->options.integrators,
+                  "Only these rows, e.g. quasi-newton,\"local-global (chebyshev)\" (default: all)")
+      ->delimiter(',');
   cmd->add_option("-o,--out", o->out_dir, "Also write bench.md and bench.json here");
   return [o] { return run_bench(*o); };
 }

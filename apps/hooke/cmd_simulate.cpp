@@ -14,7 +14,8 @@ namespace {
 
 struct SimulateCli {
   ModelSource in;
-  std::string integrator = "implicit-euler", linear_solver = "cholesky", global_solve = "direct", out_dir;
+  IntegratorInput integrator;
+  std::string out_dir;
   experiments::SimulationOptions run;
   bool free_body = false, no_reorder = false;
   std::vector<double> probe_offset, probe_force;
@@ -28,7 +29,8 @@ void print_summary(const SimulateCli& o, const calibrate::CalibratedModel& model
                    const experiments::SimulationSummary& s, const std::string& pvd, int frames) {
   const auto steps = static_cast<double>(s.step_ms.size());
   std::printf("hooke simulate: %s, %d nodes, %s model, %s, dt %.3g s, %zu steps (%.4g s)\n", model.mesh.source.c_str(),
-              model.mesh.node_count(), model.method.c_str(), o.integrator.c_str(), o.run.dt, s.step_ms.size(), s.time);
+              model.mesh.node_count(), model.method.c_str(), o.integrator.integrator.c_str(), o.run.dt,
+              s.step_ms.size(), s.time);
   std::printf("  time      %.4g ms/step median, %.4g ms/step p95; %.3g solver iterations per step\n",
               experiments::quantile(s.step_ms, 0.5), experiments::quantile(s.step_ms, 0.95),
               static_cast<double>(s.iterations) / steps);
@@ -44,9 +46,7 @@ void print_summary(const SimulateCli& o, const calibrate::CalibratedModel& model
 
 int run_simulate(SimulateCli o) {
   const calibrate::CalibratedModel model = load_model(o.in);
-  o.run.simulator.integrator = solve::integrator_from_name(o.integrator);
-  o.run.simulator.newton.linear_solver = solve::newton_linear_solver_from_name(o.linear_solver);
-  o.run.simulator.global_solve = solve::global_solve_from_name(o.global_solve);
+  apply_integrator_names(o.integrator, o.run.simulator);
   o.run.clamp_bottom = !o.free_body;
   o.run.reorder = !o.no_reorder;
   o.run.probe_offset = as_vector(o.probe_offset);
@@ -73,26 +73,7 @@ Action add_simulate_command(CLI::App& app) {
                   "surface: radius of influence of the probe's interaction weights (Eq. 4), m (default: half the "
                   "bounding-box diagonal)");
   cmd->add_option("--law", o->in.law, "FEM law with --method fem: linear, stvk, neohookean")->capture_default_str();
-  cmd->add_option(
-         "--integrator", o->integrator,
-         "symplectic-euler, velocity-verlet, implicit-euler, implicit-euler-linearised (one Newton iteration per "
-         "step, Baraff & Witkin), local-global, quasi-static")
-      ->capture_default_str();
-  cmd->add_option("--linear-solver", o->linear_solver, "Newton steps: cholesky or cg")->capture_default_str();
-  cmd->add_option("--cg-tolerance", o->run.simulator.newton.cg_tolerance,
-                  "cg: relative residual of the linear solves (implicit-euler-linearised: the whole step's)")
-      ->capture_default_str();
-  cmd->add_option("--newton-tolerance", o->run.simulator.newton.tolerance,
-                  "implicit-euler, quasi-static: |residual| / force scale to stop Newton")
-      ->capture_default_str();
-  cmd->add_option("--newton-iterations", o->run.simulator.newton.max_iterations,
-                  "implicit-euler, quasi-static: Newton iterations per step at most")
-      ->capture_default_str();
-  cmd->add_option("--global-solve", o->global_solve,
-                  "local-global: direct (prefactored Cholesky) or chebyshev (Chebyshev-accelerated Jacobi)")
-      ->capture_default_str();
-  cmd->add_option("--iterations", o->run.simulator.local_global_iterations, "local-global: iterations per step")
-      ->capture_default_str();
+  add_integrator_options(cmd, o->integrator, o->run.simulator);
   cmd->add_option("--dt", o->run.dt, "Time step, s")->capture_default_str();
   cmd->add_option("--steps", o->run.steps, "Number of steps")->capture_default_str();
   cmd->add_flag("--gravity", o->run.gravity, "Gravity 9.81 m/s^2 down the vertical axis (y in 2D, z in 3D)");

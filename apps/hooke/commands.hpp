@@ -5,6 +5,7 @@
 #include <functional>
 #include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/calibrate/surface_model.hpp>
+#include <hooke/solve/simulator.hpp>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,17 @@ void add_model_source_options(CLI::App* cmd, ModelSource& in);
 /// by the library's model factory.
 /// @throws InvalidArgument when neither or a conflicting combination is given
 calibrate::CalibratedModel load_model(const ModelSource& in);
+
+/// The time integrator and its options by name, as `simulate` and `view` take them.
+struct IntegratorInput {
+  std::string integrator = "quasi-newton", linear_solver = "cholesky", global_solve = "direct", qn_hessian = "rest";
+};
+/// Registers --integrator, --linear-solver, --cg-tolerance, --newton-tolerance, --newton-iterations, --global-solve,
+/// --iterations, --qn-iterations, --qn-tolerance and --qn-hessian on `cmd`: the names bound to `in`, the numbers to
+/// `options` (whose values are the defaults shown).
+void add_integrator_options(CLI::App* cmd, IntegratorInput& in, solve::SimulatorOptions& options);
+/// Sets the named choices of `in` in `options`. @throws InvalidArgument for an unknown name
+void apply_integrator_names(const IntegratorInput& in, solve::SimulatorOptions& options);
 
 /// Every number given to an option of type FLOAT of the parsed (sub)commands is finite: "nan", "inf" and overflowing
 /// values are refused before anything runs (an unchecked NaN slips through comparisons).

@@ -14,9 +14,10 @@ namespace hooke::viewer {
 namespace {
 
 const solve::Integrator kIntegrators[] = {
-    solve::Integrator::kImplicitEuler,           solve::Integrator::kLocalGlobal,
-    solve::Integrator::kSymplecticEuler,         solve::Integrator::kVelocityVerlet,
-    solve::Integrator::kImplicitEulerLinearised, solve::Integrator::kQuasiStatic};
+    solve::Integrator::kQuasiNewton,    solve::Integrator::kImplicitEuler,
+    solve::Integrator::kLocalGlobal,    solve::Integrator::kSymplecticEuler,
+    solve::Integrator::kVelocityVerlet, solve::Integrator::kImplicitEulerLinearised,
+    solve::Integrator::kQuasiStatic};
 
 // A combo box over names; returns true when the choice changed.
 bool combo(const char* label, std::string& current, const std::vector<std::string>& names) {
@@ -97,21 +98,26 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
       r.apply_settings = true;
     }
   }
-  std::string integrator(solve::integrator_name(e.integrator));
+  std::string integrator(solve::integrator_name(e.simulator.integrator));
   std::vector<std::string> integrators;
   for (const solve::Integrator i : kIntegrators) integrators.emplace_back(solve::integrator_name(i));
   if (combo("integrator", integrator, integrators)) {
-    e.integrator = solve::integrator_from_name(integrator);
+    e.simulator.integrator = solve::integrator_from_name(integrator);
     r.apply_settings = true;
   }
-  if (e.integrator == solve::Integrator::kLocalGlobal) {
-    std::string global(e.global_solve == solve::GlobalSolve::kDirect ? "direct" : "chebyshev");
+  if (e.simulator.integrator == solve::Integrator::kLocalGlobal) {
+    std::string global(e.simulator.global_solve == solve::GlobalSolve::kDirect ? "direct" : "chebyshev");
     if (combo("global solve", global, {"direct", "chebyshev"})) {
-      e.global_solve = solve::global_solve_from_name(global);
+      e.simulator.global_solve = solve::global_solve_from_name(global);
       r.apply_settings = true;
     }
-    int iterations = e.local_global_iterations;
-    if (ImGui::SliderInt("iterations", &iterations, 1, 30)) e.local_global_iterations = iterations;
+    int iterations = e.simulator.local_global_iterations;
+    if (ImGui::SliderInt("iterations", &iterations, 1, 30)) e.simulator.local_global_iterations = iterations;
+    r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
+  }
+  if (e.simulator.integrator == solve::Integrator::kQuasiNewton) {
+    int iterations = e.simulator.quasi_newton.max_iterations;
+    if (ImGui::SliderInt("max iterations", &iterations, 1, 30)) e.simulator.quasi_newton.max_iterations = iterations;
     r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
   }
   float dt_ms = static_cast<float>(1e3 * e.dt);

@@ -15,7 +15,8 @@ namespace {
 
 struct ViewCli {
   cli::ModelSource in;
-  std::string integrator = "implicit-euler", global_solve = "chebyshev", script, colormap = "displacement";
+  cli::IntegratorInput integrator;
+  std::string script, colormap = "displacement";
   interactive::LiveSettings settings;
   ViewerOptions run;
   bool fast = false;
@@ -31,13 +32,12 @@ int run_view(ViewCli o) {
   v.settings.material = v.model.material;
   v.settings.density = v.model.density;
   if (v.model.method == "surface") v.settings.surface = cli::surface_options(o.in.surface);
-  v.settings.integrator = solve::integrator_from_name(o.integrator);
+  v.settings.simulator = o.settings.simulator;
+  cli::apply_integrator_names(o.integrator, v.settings.simulator);
   v.settings.dt = o.settings.dt;
   v.settings.gravity = o.settings.gravity;
   v.settings.damping_mass = o.settings.damping_mass;
   v.settings.damping_stiffness = o.settings.damping_stiffness;
-  v.settings.local_global_iterations = o.settings.local_global_iterations;
-  v.settings.global_solve = solve::global_solve_from_name(o.global_solve);
   v.settings.influence_radius = o.settings.influence_radius;
   interactive::LiveSimulation check(v.model, v.settings);  // a model the integrator cannot run fails here
   (void)check;
@@ -61,17 +61,7 @@ std::function<int()> add_view_options(CLI::App* cmd) {
   auto o = std::make_shared<ViewCli>();
   cli::add_model_source_options(cmd, o->in);
   cmd->add_option("--law", o->in.law, "FEM law with --method fem: linear, stvk, neohookean")->capture_default_str();
-  cmd->add_option("--integrator", o->integrator,
-                  "implicit-euler, local-global, symplectic-euler, velocity-verlet, implicit-euler-linearised, "
-                  "quasi-static")
-      ->capture_default_str();
-  cmd->add_option("--iterations", o->settings.local_global_iterations, "local-global: iterations per step")
-      ->capture_default_str();
-  cmd->add_option(
-         "--global-solve", o->global_solve,
-         "local-global: chebyshev (Chebyshev-accelerated Jacobi, the real-time choice: 0.41 ms/step on 1 089 nodes) "
-         "or direct (prefactored Cholesky, 2.8 ms)")
-      ->capture_default_str();
+  cli::add_integrator_options(cmd, o->integrator, o->settings.simulator);
   cmd->add_option("--dt", o->settings.dt, "Time step, s; the physics runs one step per dt of wall time")
       ->capture_default_str();
   cmd->add_flag("--gravity", o->settings.gravity, "Gravity 9.81 m/s^2 down the vertical axis");

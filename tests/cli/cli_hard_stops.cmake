@@ -33,9 +33,12 @@ expect("compare --strain -5" 2 "--strain must be > 0" compare ${mesh} ${material
 expect("--probe-force 1e300" 3 "step 1" simulate ${mesh} ${material} --probe-node 3 --probe-force 0,0,1e300
        --steps 5 -o ${OUT}/huge)
 # Steps that end above the Newton tolerance fail the run (or are allowed by name).
-expect("unconverged" 3 "above the Newton tolerance" simulate ${mesh} ${material} --newton-iterations 1 --steps 3
-       --gravity -o ${OUT}/unconverged)
-execute_process(COMMAND ${HOOKE} simulate ${mesh} ${material} --newton-iterations 1 --steps 3 --gravity
+expect("unconverged" 3 "above the Newton tolerance" simulate ${mesh} ${material} --integrator implicit-euler
+       --newton-iterations 1 --steps 3 --gravity -o ${OUT}/unconverged)
+expect("quasi-newton over budget" 3 "above the Newton tolerance" simulate ${mesh} ${material} --qn-iterations 1
+       --qn-tolerance 1e-9 --steps 3 --gravity -o ${OUT}/unconverged)
+execute_process(COMMAND ${HOOKE} simulate ${mesh} ${material} --integrator implicit-euler --newton-iterations 1
+                        --steps 3 --gravity
                         --allow-unconverged -o ${OUT}/allowed RESULT_VARIABLE rc OUTPUT_VARIABLE out)
 if(NOT rc EQUAL 0 OR NOT out MATCHES "3 steps ended above the Newton tolerance")
   message(FATAL_ERROR "--allow-unconverged: expected exit 0 and a warning, got ${rc}: ${out}")

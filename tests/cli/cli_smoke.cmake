@@ -116,23 +116,25 @@ if(NOT rc EQUAL 3 OR NOT err MATCHES "stability limit" OR EXISTS ${OUT}/sim_bad/
 endif()
 
 # hooke bench: the table on the 1 089-node cylinder (every run checked admissible), as Markdown and JSON; an unknown size is refused.
-execute_process(COMMAND ${HOOKE} bench --sizes 1k --steps 3 -o ${OUT}/bench RESULT_VARIABLE rc OUTPUT_VARIABLE out
+execute_process(COMMAND ${HOOKE} bench --sizes 1k --steps 3 --methods any-nu-tet,lloyd-tet -o ${OUT}/bench
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out
                 ERROR_VARIABLE err)
 message("${out}${err}")
-if(NOT rc EQUAL 0 OR NOT out MATCHES "local-global \\(chebyshev\\)" OR NOT EXISTS ${OUT}/bench/bench.json)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "local-global \\(chebyshev\\)" OR NOT out MATCHES "local-global \\(direct\\) on 1089 nodes \\(any-nu-tet\\) not applicable"
+   OR NOT EXISTS ${OUT}/bench/bench.json)
   message(FATAL_ERROR "hooke bench failed: ${rc}")
 endif()
 file(READ ${OUT}/bench/bench.json bench_json)
 string(JSON steps LENGTH "${bench_json}" steps)
-if(NOT steps EQUAL 10)
-  message(FATAL_ERROR "hooke bench: expected 10 admissible integrator rows in bench.json, got ${steps}")
+# 12 rows for lloyd-tet, 10 for any-nu-tet (local-global needs springs only).
+if(NOT steps EQUAL 22)
+  message(FATAL_ERROR "hooke bench: expected 22 admissible integrator rows in bench.json, got ${steps}")
 endif()
-# The implicit-Euler rows (converged and linearised, Cholesky and CG) carry their error against the tightly
-# converged step.
-foreach(row 2 3 4 5 6)
+# The implicit-Euler and quasi-newton rows carry their error against the tightly converged step.
+foreach(row 2 3 4 5 6 7 8)
   string(JSON name GET "${bench_json}" steps ${row} integrator)
   string(JSON error GET "${bench_json}" steps ${row} error_vs_converged)
-  if(NOT name MATCHES "^implicit-euler" OR error LESS 0 OR error GREATER 0.05)
+  if(NOT name MATCHES "^(implicit-euler|quasi-newton)" OR error LESS 0 OR error GREATER 0.05)
     message(FATAL_ERROR "hooke bench: row ${row} is '${name}' with error ${error} against the converged step")
   endif()
 endforeach()

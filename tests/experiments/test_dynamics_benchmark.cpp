@@ -67,6 +67,7 @@ INSTANTIATE_TEST_SUITE_P(Integrators, BenchmarkCylinderUnderGravity,
                                          Case{solve::Integrator::kLocalGlobal, solve::GlobalSolve::kChebyshev, 300},
                                          Case{solve::Integrator::kImplicitEulerLinearised, solve::GlobalSolve::kDirect,
                                               300, solve::NewtonLinearSolver::kConjugateGradient},
+                                         Case{solve::Integrator::kQuasiNewton, solve::GlobalSolve::kDirect, 300},
                                          Case{solve::Integrator::kImplicitEuler, solve::GlobalSolve::kDirect, 20},
                                          Case{solve::Integrator::kQuasiStatic, solve::GlobalSolve::kDirect, 20}),
     [](const testing::TestParamInfo<Case>& p) {

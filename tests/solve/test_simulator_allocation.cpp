@@ -143,7 +143,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{Integrator::kQuasiStatic, NewtonLinearSolver::kConjugateGradient, false},
                       Case{Integrator::kImplicitEulerLinearised, NewtonLinearSolver::kConjugateGradient, false},
                       Case{Integrator::kImplicitEuler, NewtonLinearSolver::kConjugateGradient, true},
-                      Case{Integrator::kVelocityVerlet, NewtonLinearSolver::kCholesky, true}),
+                      Case{Integrator::kVelocityVerlet, NewtonLinearSolver::kCholesky, true},
+                      Case{Integrator::kQuasiNewton, NewtonLinearSolver::kCholesky, false},
+                      Case{Integrator::kQuasiNewton, NewtonLinearSolver::kCholesky, true}),
     case_name);
 
 // The surface model (scheme D: blended anchors, the volume penalty with the interaction weights following the

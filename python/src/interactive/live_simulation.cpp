@@ -48,12 +48,12 @@ void define_live_simulation(py::module_& m) {
              s.method = "file";
              s.material = model.material;
              s.density = model.density;
-             s.integrator = solve::integrator_from_name(integrator);
+             s.simulator.integrator = solve::integrator_from_name(integrator);
              s.dt = dt;
              return LiveSimulation(model, with_settings(s, kwargs));
            }),
-           py::arg("model"), py::arg("integrator") = "implicit-euler", py::arg("dt") = 1e-3,
-           "LiveSimulation(model, integrator='implicit-euler', dt=1e-3, **settings): settings as in the viewer's "
+           py::arg("model"), py::arg("integrator") = "quasi-newton", py::arg("dt") = 1e-3,
+           "LiveSimulation(model, integrator='quasi-newton', dt=1e-3, **settings): settings as in the viewer's "
            "scripts (gravity=True, damping_mass=..., damping_stiffness=..., young=..., poisson=..., method=...).")
       .def(
           "apply", [](LiveSimulation& s, const py::kwargs& kwargs) { s.apply(with_settings(s.settings(), kwargs)); },

@@ -41,8 +41,12 @@ void define_simulator(py::module_& m) {
   py::class_<PySimulator>(m, "Simulator", "Steps a Problem in time (solve::Simulator).")
       .def(py::init([](const ProblemData& p, const std::string& integrator, const std::string& linear_solver,
                        int iterations, const std::string& global_solve, const py::object& gravity, double damping_mass,
-                       double damping_stiffness, double cg_tolerance) {
+                       double damping_stiffness, double cg_tolerance, int qn_iterations, double qn_tolerance,
+                       const std::string& qn_hessian) {
              solve::SimulatorOptions o;
+             o.quasi_newton.max_iterations = qn_iterations;
+             o.quasi_newton.tolerance = qn_tolerance;
+             o.quasi_newton.initial_hessian = solve::quasi_newton_hessian_from_name(qn_hessian);
              o.integrator = solve::integrator_from_name(integrator);
              o.newton.linear_solver = solve::newton_linear_solver_from_name(linear_solver);
              o.newton.cg_tolerance = cg_tolerance;
@@ -53,11 +57,14 @@ void define_simulator(py::module_& m) {
                                  damping_mass, damping_stiffness};
              return new PySimulator{solve::Simulator(p.problem, dyn, o), {}, {}, d};
            }),
-           py::arg("problem"), py::arg("integrator") = "local-global", py::arg("linear_solver") = "cholesky",
+           py::arg("problem"), py::arg("integrator") = "quasi-newton", py::arg("linear_solver") = "cholesky",
            py::arg("iterations") = 10, py::arg("global_solve") = "direct", py::arg("gravity") = py::none(),
            py::arg("damping_mass") = 0.0, py::arg("damping_stiffness") = 0.0, py::arg("cg_tolerance") = 1e-6,
-           "Simulator(problem, integrator='local-global', ...): integrator one of symplectic-euler, velocity-verlet, "
-           "implicit-euler, implicit-euler-linearised, local-global, quasi-static; masses from the model; gravity "
+           py::arg("qn_iterations") = solve::QuasiNewtonOptions{}.max_iterations,
+           py::arg("qn_tolerance") = solve::QuasiNewtonOptions{}.tolerance, py::arg("qn_hessian") = "rest",
+           "Simulator(problem, integrator='quasi-newton', ...): integrator one of quasi-newton (every model, at most "
+           "qn_iterations L-BFGS iterations per step), symplectic-euler, velocity-verlet, implicit-euler, "
+           "implicit-euler-linearised, local-global (springs only), quasi-static; masses from the model; gravity "
            "(dim,) in m/s^2; Rayleigh damping alpha (1/s) and beta (s).")
       .def(
           "step",

@@ -65,16 +65,4 @@ void ElementSchedule::for_each_chunk(FunctionRef<void(std::span<const int>, int)
   }
 }
 
-double ElementSchedule::sum(FunctionRef<double(int)> fn) const {
-  std::array<double, kMaxChunks> partial{};
-  for_each_chunk([&](std::span<const int> elements, int chunk) {
-    double s = 0.0;
-    for (int e : elements) s += fn(e);
-    partial[static_cast<size_t>(chunk)] = s;
-  });
-  double total = 0.0;
-  for (int c = 0; c < chunk_count(); ++c) total += partial[static_cast<size_t>(c)];
-  return total;
-}
-
 }  // namespace hooke

@@ -10,6 +10,7 @@
 #include <hooke/mesh/generators.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <hooke/springs/spring_block.hpp>
+#include <memory>
 #include <sstream>
 
 namespace hooke::experiments {
@@ -48,11 +49,25 @@ mesh::Mesh benchmark_cylinder(int size) {
   return mesh::tet_cylinder(0.01, 0.02, n[size], layers[size]);
 }
 
-calibrate::CalibratedModel benchmark_model(int size) {
+calibrate::CalibratedModel benchmark_model(int size, const std::string& method, double poisson) {
   calibrate::ModelOptions o;
-  o.method = "lloyd-tet";
+  o.method = method;
   o.density = 1000.0;
-  return calibrate::calibrate_model(benchmark_cylinder(size), {material::Law::kLinear, 14630.0, 0.25}, o);
+  return calibrate::calibrate_model(benchmark_cylinder(size), {material::Law::kLinear, 14630.0, poisson}, o);
+}
+
+std::vector<int> benchmark_probe_nodes(const mesh::Mesh& cylinder) {
+  double top = -1e300, radius = 0.0;
+  for (int i = 0; i < cylinder.node_count(); ++i) {
+    top = std::max(top, cylinder.nodes(i, 2));
+    radius = std::max(radius, std::hypot(cylinder.nodes(i, 0), cylinder.nodes(i, 1)));
+  }
+  std::vector<int> nodes;
+  for (int i = 0; i < cylinder.node_count(); ++i)
+    if (cylinder.nodes(i, 2) > top - 1e-9 * radius &&
+        std::hypot(cylinder.nodes(i, 0), cylinder.nodes(i, 1)) <= 0.35 * radius)
+      nodes.push_back(i);
+  return nodes;
 }
 
 namespace {
@@ -62,7 +77,8 @@ struct Run {
   solve::GlobalSolve global_solve;
   const char* name;
   solve::NewtonLinearSolver linear_solver = solve::NewtonLinearSolver::kCholesky;
-  double cg_tolerance = 0.0;  // 0: NewtonOptions' default (1e-6)
+  double cg_tolerance = 0.0;                                                     // 0: NewtonOptions' default (1e-6)
+  solve::QuasiNewtonHessian initial_hessian = solve::QuasiNewtonHessian::kRest;  // quasi-newton
 };
 // local-global twice: with its prefactored direct global step and with the Chebyshev-Jacobi one.
 constexpr Run kRuns[] = {
@@ -79,6 +95,10 @@ constexpr Run kRuns[] = {
      solve::NewtonLinearSolver::kConjugateGradient, 1e-2},
     {solve::Integrator::kLocalGlobal, solve::GlobalSolve::kDirect, "local-global (direct)"},
     {solve::Integrator::kLocalGlobal, solve::GlobalSolve::kChebyshev, "local-global (chebyshev)"},
+    // quasi-newton with its two initial Hessians (QuasiNewtonOptions' defaults otherwise).
+    {solve::Integrator::kQuasiNewton, solve::GlobalSolve::kDirect, "quasi-newton (rest)"},
+    {solve::Integrator::kQuasiNewton, solve::GlobalSolve::kDirect, "quasi-newton (isotropic)",
+     solve::NewtonLinearSolver::kCholesky, 0.0, solve::QuasiNewtonHessian::kIsotropic},
     {solve::Integrator::kQuasiStatic, solve::GlobalSolve::kDirect, "quasi-static"}};
 
 bool is_explicit(solve::Integrator i) {
@@ -86,22 +106,40 @@ bool is_explicit(solve::Integrator i) {
 }
 
 // Why the state after step k is not one a user could reach (empty when it is).
-std::string inadmissible(const solve::Simulator& sim, const solve::StepReport& r, int k) {
+std::string inadmissible(const solve::Simulator& sim, const solve::StepReport& r, int k, bool budgeted) {
   if (!sim.positions().allFinite() || !sim.velocities().allFinite())
     return "step " + std::to_string(k) + " produced non-finite positions";
   if (!std::isfinite(sim.potential_energy())) return "step " + std::to_string(k) + " inverted an element";
-  if (!r.converged) return "step " + std::to_string(k) + " ended above the Newton tolerance";
+  if (!r.converged && !budgeted) return "step " + std::to_string(k) + " ended above the Newton tolerance";
   return {};
 }
 
+// The protocol every row runs: before each step the probe's offset along x, drag x min(1, t / (T / 2)) at the
+// step's end time t, T the simulated time of 1 + steps implicit steps.
+struct Drag {
+  std::vector<int> nodes;
+  double distance = 0.0, ramp_s = 1.0;
+  void before_step(solve::Simulator& sim, double dt) const {
+    if (nodes.empty()) return;
+    solve::Probe p;
+    p.nodes = nodes;
+    p.offset = Vec3(distance * std::min(1.0, (sim.time() + dt) / ramp_s), 0.0, 0.0);
+    sim.set_probe(p);
+  }
+};
+
 // Positions after 1 + steps steps of implicit Euler with Newton converged to 1e-12: the accuracy reference.
-VecX converged_reference(const model::Problem& problem, const solve::Dynamics& dynamics, double dt, int steps) {
+VecX converged_reference(const model::Problem& problem, const solve::Dynamics& dynamics, const Drag& drag, double dt,
+                         int steps) {
   solve::SimulatorOptions o;
   o.integrator = solve::Integrator::kImplicitEuler;
   o.newton.tolerance = 1e-12;
   o.newton.max_iterations = 200;
   solve::Simulator sim(problem, dynamics, o);
-  for (int k = 0; k <= steps; ++k) sim.step(dt);
+  for (int k = 0; k <= steps; ++k) {
+    drag.before_step(sim, dt);
+    sim.step(dt);
+  }
   return sim.positions();
 }
 
@@ -136,66 +174,97 @@ SpringThroughput spring_throughput(const calibrate::CalibratedModel& cm, double 
 DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& options) {
   if (options.steps < 1) throw InvalidArgument("the benchmark needs at least one step per integrator");
   for (int size : options.sizes) benchmark_cylinder(size);  // refuse a bad size before measuring anything
+  for (const std::string& name : options.integrators)
+    if (std::none_of(std::begin(kRuns), std::end(kRuns), [&](const Run& r) { return name == r.name; }))
+      throw InvalidArgument("the benchmark has no row '" + name + "'");
   DynamicsBenchmarkReport report;
   const double triad = triad_bytes_per_second();
   report.triad_gbps = triad * 1e-9;
   for (int size : options.sizes) {
-    const calibrate::CalibratedModel cm = benchmark_model(size);
-    const int nodes = cm.mesh.node_count();
-    report.springs.push_back(spring_throughput(cm, triad));
-    model::Problem problem = model::make_problem(calibrate::build_model(cm).model);
-    model::fix_nodes(problem, make_load_case(cm.mesh, LoadKind::kStretch, 0.0).fixed_nodes);
-    const solve::Dynamics dynamics{cm.masses, Vec3(0.0, 0.0, -9.81), 0.0, 0.0};
-    VecX reference;
-    for (const Run& run : kRuns) {
-      const std::string on = " on " + std::to_string(nodes) + " nodes";
-      const bool factorises = run.linear_solver == solve::NewtonLinearSolver::kCholesky &&
-                              (run.integrator == solve::Integrator::kImplicitEuler ||
-                               run.integrator == solve::Integrator::kImplicitEulerLinearised ||
-                               run.integrator == solve::Integrator::kQuasiStatic);
-      const bool newton =
-          run.integrator == solve::Integrator::kImplicitEuler || run.integrator == solve::Integrator::kQuasiStatic;
-      if ((factorises || newton) && size == 2) {
-        report.notes.push_back(
-            std::string(run.name) + " skipped" + on +
-            (factorises ? " (a sparse factorisation of " + std::to_string(3 * nodes) + " DOFs per Newton iteration)"
-                        : " (several Newton iterations of " + std::to_string(3 * nodes) + "-DOF CG solves per step)"));
-        continue;
+    bool first_method = true;
+    for (const std::string& method : options.methods) {
+      const calibrate::CalibratedModel cm = benchmark_model(size, method, options.poisson);
+      const int nodes = cm.mesh.node_count();
+      if (first_method) report.springs.push_back(spring_throughput(cm, triad));
+      first_method = false;
+      model::Problem problem = model::make_problem(calibrate::build_model(cm).model);
+      model::fix_nodes(problem, make_load_case(cm.mesh, LoadKind::kStretch, 0.0).fixed_nodes);
+      const solve::Dynamics dynamics{cm.masses, Vec3(0.0, 0.0, -9.81), 0.0, 0.0};
+      Drag drag;
+      if (options.drag != 0.0)
+        drag = {benchmark_probe_nodes(cm.mesh), options.drag, 0.5 * (options.steps + 1) * options.dt};
+      VecX reference;
+      for (const Run& run : kRuns) {
+        if (!options.integrators.empty() &&
+            std::find(options.integrators.begin(), options.integrators.end(), run.name) == options.integrators.end())
+          continue;
+        const std::string on = " on " + std::to_string(nodes) + " nodes (" + method + ")";
+        const bool factorises = run.linear_solver == solve::NewtonLinearSolver::kCholesky &&
+                                (run.integrator == solve::Integrator::kImplicitEuler ||
+                                 run.integrator == solve::Integrator::kImplicitEulerLinearised ||
+                                 run.integrator == solve::Integrator::kQuasiStatic);
+        const bool newton =
+            run.integrator == solve::Integrator::kImplicitEuler || run.integrator == solve::Integrator::kQuasiStatic;
+        if ((factorises || newton) && size == 2) {
+          report.notes.push_back(
+              std::string(run.name) + " skipped" + on +
+              (factorises
+                   ? " (a sparse factorisation of " + std::to_string(3 * nodes) + " DOFs per Newton iteration)"
+                   : " (several Newton iterations of " + std::to_string(3 * nodes) + "-DOF CG solves per step)"));
+          continue;
+        }
+        solve::SimulatorOptions o;
+        o.integrator = run.integrator;
+        o.global_solve = run.global_solve;
+        o.newton.linear_solver = run.linear_solver;
+        if (run.cg_tolerance > 0.0) o.newton.cg_tolerance = run.cg_tolerance;
+        o.quasi_newton.initial_hessian = run.initial_hessian;
+        std::unique_ptr<solve::Simulator> sim;
+        try {
+          sim = std::make_unique<solve::Simulator>(problem, dynamics, o);
+        } catch (const InvalidArgument& e) {  // local-global on a model with volume terms
+          report.notes.push_back(std::string(run.name) + on + " not applicable: " + e.what());
+          continue;
+        }
+        const bool budgeted = run.integrator == solve::Integrator::kQuasiNewton;
+        const double dt = is_explicit(run.integrator) ? 0.9 * sim->stable_time_step() : options.dt;
+        drag.before_step(*sim, dt);
+        std::string why = inadmissible(*sim, sim->step(dt), 1, budgeted);
+        std::vector<double> ms;
+        double iterations = 0.0, linear_iterations = 0.0;
+        int not_converged = 0;
+        for (int k = 0; k < options.steps && why.empty(); ++k) {
+          drag.before_step(*sim, dt);
+          const auto t0 = Clock::now();
+          const solve::StepReport r = sim->step(dt);
+          ms.push_back(ms_since(t0));
+          iterations += r.iterations;
+          linear_iterations += r.linear_iterations;
+          not_converged += r.converged ? 0 : 1;
+          why = inadmissible(*sim, r, k + 2, budgeted);
+        }
+        if (!why.empty()) {
+          report.notes.push_back(std::string(run.name) + on + " not reported: " + why);
+          continue;
+        }
+        StepTiming t;
+        t.nodes = nodes;
+        t.method = method;
+        t.integrator = run.name;
+        t.dt = dt;
+        t.median_ms = quantile(ms, 0.5);
+        t.p95_ms = quantile(ms, 0.95);
+        t.p99_ms = quantile(ms, 0.99);
+        t.iterations = iterations / options.steps;
+        t.linear_iterations = linear_iterations / options.steps;
+        t.not_converged = not_converged;
+        if (!is_explicit(run.integrator) && run.integrator != solve::Integrator::kQuasiStatic && size < 2) {
+          if (reference.size() == 0)
+            reference = converged_reference(problem, dynamics, drag, options.dt, options.steps);
+          t.error_vs_converged = relative_error(sim->positions(), reference, problem.model->rest_positions());
+        }
+        report.steps.push_back(t);
       }
-      solve::SimulatorOptions o;
-      o.integrator = run.integrator;
-      o.global_solve = run.global_solve;
-      o.newton.linear_solver = run.linear_solver;
-      if (run.cg_tolerance > 0.0) o.newton.cg_tolerance = run.cg_tolerance;
-      solve::Simulator sim(problem, dynamics, o);
-      const double dt = is_explicit(run.integrator) ? 0.9 * sim.stable_time_step() : options.dt;
-      std::string why = inadmissible(sim, sim.step(dt), 1);
-      std::vector<double> ms;
-      double iterations = 0.0, linear_iterations = 0.0;
-      for (int k = 0; k < options.steps && why.empty(); ++k) {
-        const auto t0 = Clock::now();
-        const solve::StepReport r = sim.step(dt);
-        ms.push_back(ms_since(t0));
-        iterations += r.iterations;
-        linear_iterations += r.linear_iterations;
-        why = inadmissible(sim, r, k + 2);
-      }
-      if (!why.empty()) {
-        report.notes.push_back(std::string(run.name) + on + " not reported: " + why);
-        continue;
-      }
-      StepTiming t{nodes,
-                   run.name,
-                   dt,
-                   quantile(ms, 0.5),
-                   quantile(ms, 0.95),
-                   iterations / options.steps,
-                   linear_iterations / options.steps};
-      if (!is_explicit(run.integrator) && run.integrator != solve::Integrator::kQuasiStatic && size < 2) {
-        if (reference.size() == 0) reference = converged_reference(problem, dynamics, options.dt, options.steps);
-        t.error_vs_converged = relative_error(sim.positions(), reference, problem.model->rest_positions());
-      }
-      report.steps.push_back(t);
     }
   }
   return report;
@@ -211,17 +280,19 @@ std::string dynamics_benchmark_markdown(const DynamicsBenchmarkReport& report) {
                   t.bandwidth_fraction);
     s << line;
   }
-  s << "\n| nodes | integrator | dt (ms) | ms/step median | ms/step p95 | iterations/step | CG iterations/step | "
-       "error vs converged |\n|---|---|---|---|---|---|---|---|\n";
+  s << "\n| nodes | model | integrator | dt (ms) | ms/step median | p95 | p99 | iterations/step | CG iterations/step | "
+       "steps above tolerance | error vs converged |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& t : report.steps) {
     char error[32] = "-";
     if (t.error_vs_converged >= 0.0) std::snprintf(error, sizeof error, "%.2g", t.error_vs_converged);
-    std::snprintf(line, sizeof line, "| %d | %s | %.3g | %.3f | %.3f | %.2f | %.1f | %s |\n", t.nodes,
-                  t.integrator.c_str(), 1e3 * t.dt, t.median_ms, t.p95_ms, t.iterations, t.linear_iterations, error);
+    std::snprintf(line, sizeof line, "| %d | %s | %s | %.3g | %.3f | %.3f | %.3f | %.2f | %.1f | %d | %s |\n", t.nodes,
+                  t.method.c_str(), t.integrator.c_str(), 1e3 * t.dt, t.median_ms, t.p95_ms, t.p99_ms, t.iterations,
+                  t.linear_iterations, t.not_converged, error);
     s << line;
   }
-  s << "\nerror vs converged: max node distance to implicit Euler with Newton to 1e-12 after the same steps, over its "
-       "largest displacement (same dt; - where the integrator solves another problem).\n";
+  s << "\nerror vs converged: max node distance to implicit Euler with Newton to 1e-12 after the same steps (gravity "
+       "and the probe's drag), over its largest displacement (same dt; - where the integrator solves another "
+       "problem).\n";
   for (const auto& n : report.notes) s << "\n- " << n;
   if (!report.notes.empty()) s << "\n";
   return s.str();

@@ -1,7 +1,8 @@
 #pragma once
 /// The dynamics benchmark behind `hooke bench` (bench/bench_dynamics.cpp measures the same with Google
 /// Benchmark, and adds Bullet): tetrahedral cylinders of about 1 000, 10 000 and 100 000 nodes (benchmark_cylinder,
-/// r 1 cm, h 2 cm, lloyd-tet springs for E 14 630 Pa, nu 0.25, 1 000 kg/m^3, bottom clamped, gravity).
+/// r 1 cm, h 2 cm, E 14 630 Pa, 1 000 kg/m^3, bottom clamped), models of several methods at one nu, gravity and a
+/// probe dragging the top's centre sideways; every row's error against a tightly converged implicit step.
 #include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/core/types.hpp>
 #include <string>
@@ -14,13 +15,25 @@ namespace hooke::experiments {
 /// @throws InvalidArgument for another size
 mesh::Mesh benchmark_cylinder(int size);
 
-/// Its model: lloyd-tet springs for E 14 630 Pa, nu 0.25 and lumped masses of 1 000 kg/m^3.
-calibrate::CalibratedModel benchmark_model(int size);
+/// Its model: `method` (a calibration method's stable name) for E 14 630 Pa and `poisson`, lumped masses of
+/// 1 000 kg/m^3. @throws InvalidArgument for an unknown method or a nu the method refuses
+calibrate::CalibratedModel benchmark_model(int size, const std::string& method = "lloyd-tet", double poisson = 0.25);
+
+/// The benchmark's probe: the top face's nodes within 0.35 r of the axis (held and dragged along x).
+std::vector<int> benchmark_probe_nodes(const mesh::Mesh& cylinder);
 
 struct DynamicsBenchmarkOptions {
   std::vector<int> sizes = {0, 1};  ///< 0, 1, 2: the 1 089-, 11 425- and 103 066-node cylinders
-  int steps = 40;                   ///< timed steps per integrator (after one untimed first step)
-  double dt = 1e-3;                 ///< implicit step, s; explicit integrators run at 0.9 x their stability limit
+  /// calibration methods, one model each, default any-nu-tet, stiffness-fit-volume, lloyd-tet
+  std::vector<std::string> methods = {"any-nu-tet", "stiffness-fit-volume", "lloyd-tet"};
+  double poisson = 0.45;  ///< nu of every model, default 0.45 (soft tissue)
+  int steps = 300;        ///< timed steps per integrator (after one untimed first step), default 300
+  double dt = 1e-3;       ///< implicit step, s; explicit integrators run at 0.9 x their stability limit
+  /// the probe's final offset along x, m, reached linearly at half the run's simulated time and held (0: no probe),
+  /// default 2 mm (a tenth of the height)
+  double drag = 2e-3;
+  /// rows to run by name (e.g. "quasi-newton", "local-global (chebyshev)"; empty = all)
+  std::vector<std::string> integrators;
 };
 
 /// Spring-force throughput on one mesh beside the in-run bandwidth bound.
@@ -33,11 +46,13 @@ struct SpringThroughput {
 /// ms per step of one integrator on one mesh.
 struct StepTiming {
   int nodes = 0;
+  std::string method;  ///< the model's calibration method
   std::string integrator;
   double dt = 0.0;  ///< s
-  double median_ms = 0.0, p95_ms = 0.0;
+  double median_ms = 0.0, p95_ms = 0.0, p99_ms = 0.0;
   double iterations = 0.0;         ///< solver iterations per step
   double linear_iterations = 0.0;  ///< conjugate-gradient iterations per step (cg rows; 0 otherwise)
+  int not_converged = 0;           ///< steps that ended above their tolerance within their budget (quasi-newton)
   /// Max node distance to implicit Euler converged tightly (Newton to 1e-12) after the same steps, relative to its
   /// largest displacement; -1 where the integrator solves another problem (explicit steps, quasi-static).
   double error_vs_converged = -1.0;
@@ -50,12 +65,13 @@ struct DynamicsBenchmarkReport {
   std::vector<std::string> notes;  ///< what was skipped and why
 };
 
-/// Runs the benchmark: triad, spring forces (median of 30 passes), then every integrator per mesh (implicit-euler
-/// and quasi-static only up to the 11 425-node mesh: their Newton matrices need a fresh factorisation of 310 000
-/// DOFs on the largest one). Every timed run is checked after each step (untimed): a run that leaves the
-/// admissible set (an inverted element, a non-finite position) or ends a step above its Newton tolerance is not
-/// reported; a note says which and where.
-/// @throws InvalidArgument on a size outside 0..2 or steps < 1
+/// Runs the benchmark: triad, spring forces (median of 30 passes), then every integrator per mesh and method
+/// (implicit-euler and quasi-static only up to the 11 425-node mesh: their Newton matrices need a fresh
+/// factorisation of 310 000 DOFs on the largest one; local-global only on spring models). Every timed run is
+/// checked after each step (untimed): a run that leaves the admissible set (an inverted element, a non-finite
+/// position) or ends a Newton step above its tolerance is not reported; a note says which and where. Budgeted
+/// steps (quasi-newton) that end above their tolerance are counted in StepTiming::not_converged.
+/// @throws InvalidArgument on a size outside 0..2, steps < 1, an unknown method or row name
 DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& options);
 
 /// The report as Markdown tables.

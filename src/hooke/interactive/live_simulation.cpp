@@ -15,7 +15,6 @@ void check_settings(const LiveSettings& s) {
   if (!(s.damping_mass >= 0.0) || !(s.damping_stiffness >= 0.0) || !std::isfinite(s.damping_mass) ||
       !std::isfinite(s.damping_stiffness))
     throw InvalidArgument("the Rayleigh damping coefficients must be finite and >= 0");
-  if (s.local_global_iterations < 1) throw InvalidArgument("local-global needs at least 1 iteration per step");
   if (!(s.influence_radius >= 0.0) || !std::isfinite(s.influence_radius))
     throw InvalidArgument("the radius of influence must be finite and >= 0 m");
 }
@@ -79,11 +78,7 @@ struct LiveSimulation::Impl {
       dyn.gravity = VecX::Zero(d);
       dyn.gravity(d - 1) = -9.81;
     }
-    solve::SimulatorOptions so;
-    so.integrator = settings.integrator;
-    so.local_global_iterations = settings.local_global_iterations;
-    so.global_solve = settings.global_solve;
-    solve::Simulator s(std::move(problem), std::move(dyn), so);
+    solve::Simulator s(std::move(problem), std::move(dyn), settings.simulator);  // checks the integrator's options
     s.set_state(x, v);
     sim.emplace(std::move(s));
     if (!probe.nodes.empty()) {

@@ -22,9 +22,8 @@ struct LiveSettings {
   material::Material material;        ///< E (Pa), nu, thickness (2D); the law matters for "fem" only
   double density = 1000.0;            ///< kg/m^3 (> 0)
   calibrate::SurfaceOptions surface;  ///< "surface" only: scheme, anchor law, volume penalty
-  solve::Integrator integrator = solve::Integrator::kImplicitEuler;
-  int local_global_iterations = 10;                               ///< local-global: iterations per step
-  solve::GlobalSolve global_solve = solve::GlobalSolve::kDirect;  ///< local-global: the global step's solver
+  /// the integrator and its options (solve::SimulatorOptions' defaults: quasi-newton, which runs every model)
+  solve::SimulatorOptions simulator;
   double dt = 1e-3;                ///< time step, s (> 0): 1 kHz by default, a haptic loop's rate
   bool gravity = false;            ///< 9.81 m/s^2 down the vertical axis (y in 2D, z in 3D)
   double damping_mass = 0.0;       ///< Rayleigh alpha, 1/s (>= 0)

@@ -26,14 +26,26 @@ double parse_number(const std::string& key, const std::string& value) {
 struct StepClock {
   static constexpr size_t kWindow = 1000;
   std::vector<double> ms = std::vector<double>(kWindow, 0.0);
-  std::deque<Clock::time_point> ends;  // step ends within the last second
+  std::deque<Clock::time_point> starts;  // starts of the steps that ended within the last second
+  Clock::time_point last_end;
   size_t count = 0;
 
-  void add(double step_ms, Clock::time_point end) {
+  void add(double step_ms, Clock::time_point start, Clock::time_point end) {
     ms[count % kWindow] = step_ms;
     ++count;
-    ends.push_back(end);
-    while (!ends.empty() && end - ends.front() > std::chrono::seconds(1)) ends.pop_front();
+    starts.push_back(start);
+    last_end = end;
+    while (!starts.empty() && end - starts.front() > std::chrono::seconds(1)) starts.pop_front();
+  }
+  // Steps completed per second of wall time over the window: the steps over the wall time from the first one's
+  // start to the last one's end, that time at least one period per step when paced (a paced loop cannot run ahead
+  // of its target, and a step that took less than its period still took a period of wall time).
+  double rate(double period, bool paced) const {
+    if (starts.empty()) return 0.0;
+    const auto n = static_cast<double>(starts.size());
+    double span = std::chrono::duration<double>(last_end - starts.front()).count();
+    if (paced) span = std::max(span, n * period);
+    return span > 0.0 ? n / span : 0.0;
   }
   std::vector<double> window() const {
     return std::vector<double>(ms.begin(), ms.begin() + static_cast<long>(std::min(count, kWindow)));
@@ -52,7 +64,7 @@ void apply_setting(LiveSettings& s, const std::string& key, const std::string& v
   } else if (key == "method") {
     s.method = value;
   } else if (key == "integrator") {
-    s.integrator = solve::integrator_from_name(value);
+    s.simulator.integrator = solve::integrator_from_name(value);
   } else if (key == "dt") {
     s.dt = parse_number(key, value);
   } else if (key == "damping-mass") {
@@ -254,7 +266,7 @@ void PhysicsLoop::run_steps() {
       const Clock::time_point t0 = Clock::now();
       m_wake.wait(lock, [this] { return m_stop || !m_waiting_for_drawing; });
       paused_seconds += std::chrono::duration<double>(Clock::now() - t0).count();  // not the physics' time
-      clock.ends.clear();
+      clock.starts.clear();
       next = Clock::now();
       continue;
     }
@@ -263,7 +275,7 @@ void PhysicsLoop::run_steps() {
       const Clock::time_point t0 = Clock::now();
       m_wake.wait_for(lock, std::chrono::milliseconds(5));
       paused_seconds += std::chrono::duration<double>(Clock::now() - t0).count();
-      clock.ends.clear();
+      clock.starts.clear();
       next = Clock::now();
       continue;
     }
@@ -286,14 +298,14 @@ void PhysicsLoop::run_steps() {
     const Clock::time_point t1 = Clock::now();
     const double step_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
     const double period = m_sim.settings().dt;
-    clock.add(step_ms, t1);
+    clock.add(step_ms, t0, t1);
     ++m_stats.steps;
     if (step_ms > 1e3 * period) ++m_stats.overruns;
     m_stats.wall_time = std::chrono::duration<double>(t1 - start).count() - paused_seconds;
-    // Steps over the last second of wall time (over the time since the last pause while that is shorter).
-    const double window = std::min(1.0, std::chrono::duration<double>(t1 - clock.ends.front()).count() + period);
-    m_stats.achieved_rate = static_cast<double>(clock.ends.size()) / window;
-    m_stats.behind = m_realtime && m_stats.wall_time > 1.0 && m_stats.achieved_rate < 0.95 / period;
+    // Steps per wall second over the last second (since the last pause while that is shorter); behind whenever
+    // that is below the target (1 % for the scheduler's wake-up jitter), paced or not.
+    m_stats.achieved_rate = clock.rate(period, m_realtime);
+    m_stats.behind = m_stats.achieved_rate < 0.99 / period;
     if (clock.count % 100 == 1 || clock.count < 100) {  // percentiles now and then: sorting 1 000 values costs ~20 us
       const std::vector<double> w = clock.window();
       m_stats.step_ms_median = experiments::quantile(w, 0.5);

@@ -18,13 +18,15 @@ namespace hooke::interactive {
 
 /// What the physics thread achieved.
 struct PhysicsStats {
-  double target_rate = 0.0;     ///< steps per second of wall time wanted: 1 / dt, Hz
-  double achieved_rate = 0.0;   ///< steps in the last second of wall time (or since the start), Hz
+  double target_rate = 0.0;  ///< steps per second of wall time wanted: 1 / dt, Hz
+  /// steps completed per second of wall time over the last second (or since the start or a pause), Hz: the steps
+  /// over the wall time from the first one's start to the last one's end (at least a period per step when paced)
+  double achieved_rate = 0.0;
   double step_ms_median = 0.0;  ///< median wall time of a step over the last 1 000 steps, ms
   double step_ms_p99 = 0.0;     ///< 99th percentile of the same, ms
   long steps = 0;               ///< steps since the start
   long overruns = 0;            ///< steps that took longer than their period
-  bool behind = false;          ///< the achieved rate is below 95 % of the target over the last second
+  bool behind = false;          ///< the achieved rate is below the target (by more than 1 %)
   bool paused = false;
   double sim_time = 0.0;   ///< s
   double wall_time = 0.0;  ///< s since start() (not counting pauses)

@@ -22,13 +22,19 @@ enum class Integrator {
                      ///< a fixed iteration count trades accuracy for speed.
   kQuasiStatic,      ///< "quasi-static": each step relaxes to the static equilibrium under the current loads
                      ///< (Newton from the previous state); velocities are zero.
-  kImplicitEulerLinearised  ///< "implicit-euler-linearised": Baraff & Witkin 1998, "Large Steps in Cloth
-                            ///< Simulation": backward Euler linearised about x_n, one linear solve
-                            ///< (M + dt D + dt^2 K(x_n)) dv = dt (f(x_n) - D v_n - dt K(x_n) v_n) per step, i.e. one
-                            ///< Newton iteration of implicit-euler from x_n without line search. Stable for stiff
-                            ///< springs at large dt, one factorisation per step; the step is not iterated to
-                            ///< convergence (StepReport::residual says how far it is; converged is true by
-                            ///< definition).
+  kImplicitEulerLinearised,  ///< "implicit-euler-linearised": Baraff & Witkin 1998, "Large Steps in Cloth
+                             ///< Simulation": backward Euler linearised about x_n, one linear solve
+                             ///< (M + dt D + dt^2 K(x_n)) dv = dt (f(x_n) - D v_n - dt K(x_n) v_n) per step, i.e. one
+                             ///< Newton iteration of implicit-euler from x_n without line search. Stable for stiff
+                             ///< springs at large dt, one factorisation per step; the step is not iterated to
+                             ///< convergence (StepReport::residual says how far it is; converged is true by
+                             ///< definition).
+  kQuasiNewton  ///< "quasi-newton": Liu, Bouaziz & Kavan 2017, "Quasi-Newton Methods for Real-Time Simulation of
+                ///< Hyperelastic Materials": implicit-euler's incremental potential for any model, minimised by
+                ///< L-BFGS with line search whose initial Hessian is the step's Newton matrix at rest, factorised
+                ///< once per dt (grabbing nodes adds a capacitance correction, no refactorisation). One gradient,
+                ///< one energy and one prefactored solve per iteration, up to QuasiNewtonOptions::max_iterations
+                ///< (the real-time budget); StepReport::converged says whether the tolerance was met within it.
 };
 
 Integrator integrator_from_name(std::string_view name);  ///< @throws InvalidArgument listing the names
@@ -44,5 +50,9 @@ enum class GlobalSolve {
 };
 
 GlobalSolve global_solve_from_name(std::string_view name);  ///< @throws InvalidArgument
+
+/// "rest" or "isotropic" (QuasiNewtonHessian in simulator.hpp). @throws InvalidArgument
+enum class QuasiNewtonHessian : int;
+QuasiNewtonHessian quasi_newton_hessian_from_name(std::string_view name);
 
 }  // namespace hooke::solve

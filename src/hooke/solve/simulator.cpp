@@ -52,10 +52,13 @@ struct Simulator::Impl {
       r.probe_force = -probe.force;
       return;
     }
-    model().gradient(s.x, s.grad,
-                     s.problem.interaction_or_null());  // at the new x: also the next explicit step's gradient
-    s.gradient_valid = true;
-    for (int node : probe.nodes) r.probe_force -= s.grad.segment(d * node, d) - s.f_total.segment(d * node, d);
+    if (!s.fixed_grad_valid) {
+      model().gradient(s.x, s.grad,
+                       s.problem.interaction_or_null());  // at the new x: also the next explicit step's gradient
+      s.gradient_valid = true;
+    }
+    const VecX& g = s.fixed_grad_valid ? s.fixed_grad : s.grad;  // the step's own evaluation at x, where it kept one
+    for (int node : probe.nodes) r.probe_force -= g.segment(d * node, d) - s.f_total.segment(d * node, d);
   }
 };
 
@@ -105,6 +108,7 @@ void Simulator::set_state(const VecX& positions, const VecX& velocities) {
   m->s.x = positions;
   m->s.v = velocities;
   m->s.gradient_valid = false;
+  m->s.fixed_grad_valid = false;
 }
 model::Problem& Simulator::problem() { return m->s.problem; }
 
@@ -126,6 +130,7 @@ void Simulator::set_probe(const Probe& probe) {
         for (int a = 0; a < d; ++a) fixed[static_cast<size_t>(d * probe.nodes[k] + a)] = 1;
     }
     m->s.refix();
+    m->s.fixed_grad_valid = false;
     m->integrator->refix();
   }
   m->probe = probe;

@@ -26,8 +26,33 @@ inline NewtonOptions time_step_newton_options() {
   return o;
 }
 
+/// The initial Hessian of the quasi-newton integrator's L-BFGS.
+enum class QuasiNewtonHessian : int {
+  kRest,      ///< "rest": the step's Newton matrix at rest, M (1/dt^2 + alpha/dt) + (1 + beta/dt) K0
+  kIsotropic  ///< "isotropic": the same with each node pair's block of K0 replaced by a multiple of the identity
+              ///< (its trace x isotropic_scale / dim): one per-node factor for all axes, dim x cheaper to solve
+};
+
+/// The quasi-newton integrator's budget and stopping test (docs/simulation.md says how they were chosen).
+struct QuasiNewtonOptions {
+  /// L-BFGS iterations per step at most: the real-time budget, default 8
+  int max_iterations = 8;
+  /// the step stops when |gradient| on the free DOFs <= tolerance x the step's force scale (|loads| + the first
+  /// |gradient|, N), default 1e-2 (on the benchmark cylinders 3e-4-9e-4 of the largest displacement off a converged
+  /// step after 300 steps, docs/simulation.md); in (0, 1)
+  double tolerance = 1e-2;
+  /// curvature pairs kept (Liu et al. 2017 use 5), carried across steps while dt and the fixed DOFs stay; >= 0,
+  /// default 5
+  int history = 5;
+  QuasiNewtonHessian initial_hessian = QuasiNewtonHessian::kRest;  ///< default rest
+  double isotropic_scale =
+      2.0;  ///< isotropic: the factor on the blocks' traces / dim, default 2 (measured best of 1-3)
+};
+
 struct SimulatorOptions {
-  Integrator integrator = Integrator::kImplicitEuler;  ///< default implicit-euler
+  /// default quasi-newton: every model, at a fixed budget per step, measured within 1e-3 of a converged step on
+  /// the benchmark cylinders (docs/simulation.md)
+  Integrator integrator = Integrator::kQuasiNewton;
   /// implicit-euler, implicit-euler-linearised, quasi-static: the Newton core's options (the linearised step uses
   /// linear_solver, backend, project_psd and cg_tolerance), default time_step_newton_options()
   NewtonOptions newton = time_step_newton_options();
@@ -36,6 +61,7 @@ struct SimulatorOptions {
   /// local-global with chebyshev: false = plain Jacobi sweeps (for comparison; may be unstable for odd iteration
   /// counts, docs/simulation.md)
   bool chebyshev_acceleration = true;
+  QuasiNewtonOptions quasi_newton;  ///< quasi-newton: budget and tolerance
 };
 
 /// A haptic or mouse probe: it grabs nodes and either drives them (as a stiff haptic device or a mouse drag

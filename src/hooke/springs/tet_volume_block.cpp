@@ -6,17 +6,12 @@ namespace {
 
 using Mat34 = Eigen::Matrix<double, 3, 4>;
 
-double volume(const Mat34& p) {
+// Inlined into MeasureTerms' loops (a call per tet was half their time: 26 ns per volume on the 1 089-node cylinder).
+[[gnu::always_inline]] inline double volume(const Mat34& p) {
   return (p.col(1) - p.col(0)).dot((p.col(2) - p.col(0)).cross(p.col(3) - p.col(0))) / 6.0;
 }
 
-}  // namespace
-
-// dV/dp_a in column a. From V = e1 . (e2 x e3) / 6 with e_k = p_{k+1} - p1: dV/dp2 = e2 x e3 / 6,
-// dV/dp3 = e3 x e1 / 6, dV/dp4 = e1 x e2 / 6, dV/dp1 = -(their sum). Erratum: Lloyd App. C.2 prints
-// (p2 - p4) x (p3 - p4) for p1 and (p4 - p2) x (p1 - p2) for p3, both of the wrong sign (on the unit tet the
-// first gives +(1,1,1)/6, although moving p1 towards its opposite face shrinks V); see docs/methods/springs.md.
-Mat34 tet_volume_gradient(const Mat34& p) {
+[[gnu::always_inline]] inline Mat34 volume_gradient(const Mat34& p) {
   const Vec3 e1 = p.col(1) - p.col(0), e2 = p.col(2) - p.col(0), e3 = p.col(3) - p.col(0);
   Mat34 g;
   g.col(1) = e2.cross(e3) / 6.0;
@@ -25,6 +20,14 @@ Mat34 tet_volume_gradient(const Mat34& p) {
   g.col(0) = -(g.col(1) + g.col(2) + g.col(3));
   return g;
 }
+
+}  // namespace
+
+// dV/dp_a in column a. From V = e1 . (e2 x e3) / 6 with e_k = p_{k+1} - p1: dV/dp2 = e2 x e3 / 6,
+// dV/dp3 = e3 x e1 / 6, dV/dp4 = e1 x e2 / 6, dV/dp1 = -(their sum). Erratum: Lloyd App. C.2 prints
+// (p2 - p4) x (p3 - p4) for p1 and (p4 - p2) x (p1 - p2) for p3, both of the wrong sign (on the unit tet the
+// first gives +(1,1,1)/6, although moving p1 towards its opposite face shrinks V); see docs/methods/springs.md.
+Mat34 tet_volume_gradient(const Mat34& p) { return volume_gradient(p); }
 
 namespace {
 
@@ -60,8 +63,8 @@ namespace {
 // The tet's volume and its derivatives for MeasureTerms.
 struct TetShape {
   static constexpr int kDim = 3, kCorners = 4;
-  static double measure(const Mat34& p) { return volume(p); }
-  static Mat34 gradient(const Mat34& p) { return tet_volume_gradient(p); }
+  [[gnu::always_inline]] static double measure(const Mat34& p) { return volume(p); }
+  [[gnu::always_inline]] static Mat34 gradient(const Mat34& p) { return volume_gradient(p); }
   static Mat12 hessian(const Mat34& p) { return volume_hessian(p); }
 };
 

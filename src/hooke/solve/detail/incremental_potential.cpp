@@ -7,7 +7,7 @@ namespace hooke::solve::detail {
 IncrementalPotential::IncrementalPotential(SimulationState& s) : m_s(s) {
   const VecX& rest = s.model().rest_positions();
   m_size = std::max(rest.maxCoeff() - rest.minCoeff(), 1e-300);
-  for (VecX* w : {&m_x_n, &m_x_hat, &m_dz, &m_damping}) w->setZero(s.nd);
+  for (VecX* w : {&m_x_n, &m_x_hat, &m_dz, &m_damping, &m_fixed_gradient}) w->setZero(s.nd);
 }
 
 void IncrementalPotential::begin(double w, double dt) {
@@ -39,6 +39,7 @@ double IncrementalPotential::value(const VecX& z) {
 
 void IncrementalPotential::gradient(const VecX& z, VecX& out) {
   m_s.model().gradient(z, out, m_s.problem.interaction_or_null());
+  for (Eigen::Index i = 0; i < m_s.nd; ++i) m_fixed_gradient(i) = m_s.fixed(i) ? out(i) : 0.0;
   out -= m_s.f_total;
   if (m_w > 0.0) out += m_w * m_s.dyn.mass.cwiseProduct(z - m_x_hat);
   if (m_s.damped() && m_dt > 0.0) {

@@ -28,12 +28,15 @@ class IncrementalPotential final : public NewtonObjective {
   // H(z) + w M + D / dt, fixed DOFs replaced by the identity.
   SparseMatrix& newton_matrix(const VecX& z, bool project) override;
   const std::vector<int>& diagonal() const override { return m_s.hessian_assembly().diagonal(); }
+  // dE/dx (the model's forces alone, N) on the fixed DOFs at the z of the last gradient() call; other entries 0.
+  const VecX& fixed_model_gradient() const { return m_fixed_gradient; }
 
  private:
   SimulationState& m_s;
   double m_w = 0.0, m_dt = 0.0, m_size = 1.0, m_scale = -1.0, m_load = 0.0;
   VecX m_x_n, m_x_hat, m_dz, m_damping;  // start, inertial target, scratch
-  Constraint m_constraint;               // the fixed DOFs' rows and columns in the Newton matrix
+  VecX m_fixed_gradient;
+  Constraint m_constraint;  // the fixed DOFs' rows and columns in the Newton matrix
 };
 
 }  // namespace hooke::solve::detail

@@ -7,7 +7,7 @@ namespace hooke::solve::detail {
 
 SimulationState::SimulationState(model::Problem p, Dynamics d)
     : problem(std::move(p)), dyn(std::move(d)), nd(problem.model->dof_count()) {
-  for (VecX* w : {&x, &v, &f_total, &grad}) w->setZero(nd);
+  for (VecX* w : {&x, &v, &f_total, &grad, &fixed_grad}) w->setZero(nd);
 }
 
 model::HessianAssembly& SimulationState::hessian_assembly() {

@@ -15,6 +15,8 @@ struct SimulationState {
   VecX f_total;         // the step's loads: dead forces, gravity, a pushing probe, N
   VecX grad;            // dE/dx at x when gradient_valid (explicit steps reuse the probe force's evaluation)
   bool gradient_valid = false;
+  VecX fixed_grad;  // dE/dx at x on the fixed DOFs (0 elsewhere) when fixed_grad_valid: the probe force's input
+  bool fixed_grad_valid = false;
 
   SimulationState(model::Problem p, Dynamics d);
 
@@ -39,6 +41,7 @@ struct SimulationState {
       v.setZero();
     x = y;
     gradient_valid = false;
+    fixed_grad_valid = false;
   }
   // The fixed DOFs changed.
   void refix() { m_stable_dt = -1.0; }

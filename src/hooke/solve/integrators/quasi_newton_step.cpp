@@ -1,0 +1,269 @@
+// The quasi-Newton family (Liu, Bouaziz & Kavan 2017, "Quasi-Newton Methods for Real-Time Simulation of
+// Hyperelastic Materials", ACM TOG 36(3)): backward Euler's incremental potential of any model, minimised by
+// L-BFGS whose initial Hessian is the step's Newton matrix at rest, H0 = M (1/dt^2 + alpha/dt) + (1 + beta/dt) K0,
+// factorised once per dt. Every iteration costs one gradient, one energy (line search) and one prefactored solve:
+// local/global's cost for springs, tet volume terms, area terms, anchors, volume penalties and FEM alike.
+//
+// Two choices beyond the paper, both measured (docs/simulation.md):
+// - The curvature pairs (s, y) are kept across steps: y = grad phi(a) - grad phi(b) = (M/dt^2 + D/dt)(a - b) +
+//   grad E(a) - grad E(b) does not depend on x_n, v_n or the loads, so a pair of the last step is curvature of this
+//   step's objective too. They are dropped when dt or the fixed DOFs change.
+// - Nodes grabbed by a probe are held without a new factorisation: for the c DOFs E fixed since H0 was factorised,
+//   the constrained solve is z = H0^-1 r - W C^-1 (H0^-1 r)_E with W = H0^-1 E and C = E^T W (a capacitance
+//   correction, c solves at the grab), so grabbing costs no refactorisation in a haptic loop.
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <hooke/core/error.hpp>
+#include <hooke/core/sparse_cholesky.hpp>
+#include <hooke/solve/detail/incremental_potential.hpp>
+#include <hooke/solve/detail/integrator_step.hpp>
+#include <hooke/solve/detail/sparse_ops.hpp>
+#include <vector>
+
+namespace hooke::solve::detail {
+namespace {
+
+// Beyond this many DOFs held since the factorisation, H0 is refactorised instead of corrected: the correction
+// costs c x DOFs per solve.
+constexpr int kMaxCorrectedDofs = 96;
+
+class QuasiNewtonStep final : public IntegratorStep {
+ public:
+  QuasiNewtonStep(SimulationState& s, const SimulatorOptions& options)
+      : m_s(s), m_opt(options.quasi_newton), m_objective(s), m_factor(options.newton.backend) {
+    const QuasiNewtonOptions& q = m_opt;
+    if (q.max_iterations < 1 || q.history < 0 || !(q.tolerance > 0.0 && q.tolerance < 1.0))
+      throw InvalidArgument("quasi-newton needs at least 1 iteration, a history >= 0 and a tolerance in (0, 1)");
+    for (VecX* w : {&m_y, &m_trial, &m_grad, &m_grad_trial, &m_dir, &m_q, &m_fixed_grad}) w->setZero(s.nd);
+    m_s_hist.setZero(s.nd, q.history);
+    m_y_hist.setZero(s.nd, q.history);
+    m_rho.setZero(q.history);
+    m_alpha.setZero(q.history);
+  }
+
+  void refix() override {
+    m_pairs = 0;
+    m_refix = true;
+  }
+
+  StepReport step(SimulationState& s, double dt) override {
+    if (dt != m_dt) {
+      factorize(dt);
+    } else if (m_refix) {
+      hold_new_dofs();
+    }
+    m_refix = false;
+    m_objective.begin(1.0 / (dt * dt), dt);
+    m_y = m_objective.inertial_target();
+    double phi = m_objective.value(m_y);
+    if (!std::isfinite(phi)) {  // x_hat inverts an element: start from where the body is
+      m_y = s.x;
+      s.apply_prescribed(m_y);
+      phi = m_objective.value(m_y);
+    }
+    m_objective.gradient(m_y, m_grad);
+    m_fixed_grad = m_objective.fixed_model_gradient();
+    StepReport r;
+    double residual = m_grad.norm();
+    const bool conservative = m_objective.conservative();
+    int it = 0;
+    // An overflowing load (a force of 1e300 N) makes the scale infinite, and every residual would pass the test.
+    const auto done = [&] {
+      return std::isfinite(residual) && std::isfinite(m_objective.force_scale()) &&
+             residual <= m_opt.tolerance * m_objective.force_scale();
+    };
+    for (; it < m_opt.max_iterations; ++it) {
+      if (done() || !std::isfinite(residual) || !std::isfinite(m_objective.force_scale())) break;
+      two_loop();
+      double slope = m_grad.dot(m_dir);
+      if (!(slope < 0.0)) {  // the history gives no descent: start it again from H0
+        m_pairs = 0;
+        two_loop();
+        slope = m_grad.dot(m_dir);
+        if (!(slope < 0.0)) break;
+      }
+      // Backtracking from the full step: Armijo on phi, or a smaller residual where the forces have no potential.
+      double alpha = 1.0, phi_trial = phi;
+      bool accepted = false;
+      for (int ls = 0; ls < 30 && !accepted; ++ls, alpha *= 0.5) {
+        m_trial = m_y + alpha * m_dir;
+        if (conservative) {
+          phi_trial = m_objective.value(m_trial);
+          if (!std::isfinite(phi_trial)) continue;
+          accepted = phi_trial <= phi + 1e-4 * alpha * slope || std::abs(phi_trial - phi) <= 1e-13 * std::abs(phi);
+          if (accepted) m_objective.gradient(m_trial, m_grad_trial);
+        } else {
+          m_objective.gradient(m_trial, m_grad_trial);
+          accepted = std::isfinite(m_grad_trial.norm()) && m_grad_trial.norm() < (1.0 - 1e-4 * alpha) * residual;
+        }
+      }
+      if (!accepted) break;
+      push_pair();
+      m_fixed_grad = m_objective.fixed_model_gradient();  // the last gradient() was at the accepted trial
+      m_y.swap(m_trial);
+      m_grad.swap(m_grad_trial);
+      phi = phi_trial;
+      residual = m_grad.norm();
+    }
+    r.iterations = it;
+    r.residual = residual;
+    r.converged = done();
+    s.advance(m_y, dt);
+    s.fixed_grad.swap(m_fixed_grad);  // the probe force without another gradient evaluation
+    s.fixed_grad_valid = true;
+    return r;
+  }
+
+ private:
+  // H0 on the current fixed DOFs (identity rows and columns there), factorised. kRest: the Newton matrix at rest,
+  // its PSD projection where the exact one is not positive definite (negative volume terms of an indefinite
+  // assembly, prestrain). kIsotropic: one per-node matrix for all axes (Kronecker form, like local/global's), each
+  // node pair's 3 x 3 block of K0 replaced by its trace (times QuasiNewtonOptions::isotropic_scale / dim), for
+  // models whose masses are equal on a node's axes and whose nodes are fixed on all axes or none.
+  void factorize(double dt) {
+    const double mass_factor = 1.0 / (dt * dt) + m_s.dyn.mass_damping / dt;
+    const double k_factor = 1.0 + m_s.dyn.stiffness_damping / dt;
+    const int d = m_s.model().dim();
+    const std::vector<char>& fixed = m_s.problem.fixed_dofs;
+    bool kronecker = m_opt.initial_hessian == QuasiNewtonHessian::kIsotropic;
+    for (Eigen::Index i = 0; i < m_s.nd && kronecker; ++i)
+      kronecker = m_s.dyn.mass(i) == m_s.dyn.mass(i - i % d) &&
+                  fixed[static_cast<size_t>(i)] == fixed[static_cast<size_t>(i - i % d)];
+    m_components = kronecker ? d : 1;
+    for (bool project : {false, true}) {
+      model::HessianAssembly& a = m_s.hessian_assembly();
+      if (project)
+        a.assemble(m_s.model().rest_positions(), true);
+      else
+        a.matrix() = m_s.rest_stiffness();  // same pattern
+      SparseMatrix h;
+      if (kronecker) {
+        const double w = k_factor * m_opt.isotropic_scale / d;
+        std::vector<Triplet> t;
+        for (int c = 0; c < a.matrix().outerSize(); ++c)
+          for (SparseMatrix::InnerIterator it(a.matrix(), c); it; ++it)
+            if (it.row() % d == c % d) t.emplace_back(static_cast<int>(it.row()) / d, c / d, w * it.value());
+        for (Eigen::Index u = 0; u < m_s.nd / d; ++u) t.emplace_back(u, u, mass_factor * m_s.dyn.mass(d * u));
+        h.resize(m_s.nd / d, m_s.nd / d);
+        h.setFromTriplets(t.begin(), t.end());
+      } else {
+        h = a.matrix() * k_factor;
+        for (Eigen::Index i = 0; i < m_s.nd; ++i)
+          h.valuePtr()[a.diagonal()[static_cast<size_t>(i)]] += mass_factor * m_s.dyn.mass(i);
+      }
+      constrain(h, fixed, m_components);
+      if (m_factor.factorize(h)) {
+        m_dt = dt;
+        m_factor_fixed = fixed;
+        m_held.clear();
+        m_pairs = 0;
+        return;
+      }
+    }
+    throw SolverFailure("quasi-newton: the step's matrix at rest is not positive definite even projected");
+  }
+
+  // The DOFs fixed since the factorisation, held by the capacitance correction (or a new factorisation when DOFs
+  // were released or too many were added). In Kronecker form the held unknowns are nodes, shared by all axes.
+  void hold_new_dofs() {
+    const std::vector<char>& fixed = m_s.problem.fixed_dofs;
+    const int r = m_components;
+    std::vector<int> held;
+    for (size_t i = 0; i < fixed.size(); ++i) {
+      if (m_factor_fixed[i] && !fixed[i]) return factorize(m_dt);  // released: H0 has an identity row there
+      if (fixed[i] != fixed[i - i % static_cast<size_t>(r)]) return factorize(m_dt);  // not whole nodes
+      if (fixed[i] && !m_factor_fixed[i] && i % static_cast<size_t>(r) == 0) held.push_back(static_cast<int>(i) / r);
+    }
+    if (static_cast<int>(held.size()) * r > kMaxCorrectedDofs) return factorize(m_dt);
+    m_held = held;
+    const auto c = static_cast<Eigen::Index>(held.size()), n = m_s.nd / r;
+    m_w.setZero(n, c);
+    for (Eigen::Index k = 0; k < c; ++k) {
+      m_w(held[static_cast<size_t>(k)], k) = 1.0;
+      m_factor.solve_in_place(m_w.col(k).data(), 1);
+    }
+    MatX cap(c, c);
+    for (Eigen::Index k = 0; k < c; ++k)
+      for (Eigen::Index j = 0; j < c; ++j) cap(k, j) = m_w(held[static_cast<size_t>(k)], j);
+    m_capacitance.compute(cap);
+    m_lambda.setZero(c, r);
+  }
+
+  // z = H0^-1 z on the current free DOFs, in place.
+  void apply_h0_inverse(VecX& z) {
+    const int r = m_components;
+    m_factor.solve_in_place(z.data(), r);
+    if (m_held.empty()) return;
+    for (size_t k = 0; k < m_held.size(); ++k)
+      for (int a = 0; a < r; ++a) m_lambda(static_cast<Eigen::Index>(k), a) = z(r * m_held[k] + a);
+    m_capacitance.solveInPlace(m_lambda);
+    const Eigen::Index c = m_w.cols();
+    for (Eigen::Index u = 0; u < m_w.rows(); ++u)
+      for (int a = 0; a < r; ++a) {
+        double sum = 0.0;
+        for (Eigen::Index k = 0; k < c; ++k) sum += m_w(u, k) * m_lambda(k, a);
+        z(r * u + a) -= sum;
+      }
+    for (int u : m_held)
+      for (int a = 0; a < r; ++a) z(r * u + a) = 0.0;  // exactly, not to round-off
+  }
+
+  // L-BFGS two-loop recursion (Nocedal & Wright, Numerical Optimization, 2nd ed., Alg. 7.4): m_dir = -H grad with
+  // H0^-1 in the middle; the pairs are stored in a ring, the newest at m_newest.
+  void two_loop() {
+    m_q = m_grad;
+    const int m = m_opt.history;
+    for (int k = 0; k < m_pairs; ++k) {
+      const int i = (m_newest - k + m) % m;
+      m_alpha(i) = m_rho(i) * m_s_hist.col(i).dot(m_q);
+      m_q.noalias() -= m_alpha(i) * m_y_hist.col(i);
+    }
+    apply_h0_inverse(m_q);
+    for (int k = m_pairs - 1; k >= 0; --k) {
+      const int i = (m_newest - k + m) % m;
+      const double beta = m_rho(i) * m_y_hist.col(i).dot(m_q);
+      m_q.noalias() += (m_alpha(i) - beta) * m_s_hist.col(i);
+    }
+    m_dir = -m_q;
+  }
+
+  // Stores s = trial - y, y = grad(trial) - grad(y) when its curvature is positive.
+  void push_pair() {
+    const int m = m_opt.history;
+    if (m == 0) return;
+    double sy = 0.0;
+    for (Eigen::Index i = 0; i < m_s.nd; ++i) sy += (m_trial(i) - m_y(i)) * (m_grad_trial(i) - m_grad(i));
+    if (!(sy > 1e-300)) return;  // no positive curvature along the step (round-off, a non-convex region): skip it
+    const int slot = (m_newest + 1) % m;
+    m_s_hist.col(slot) = m_trial - m_y;
+    m_y_hist.col(slot) = m_grad_trial - m_grad;
+    m_rho(slot) = 1.0 / sy;
+    m_newest = slot;
+    m_pairs = std::min(m_pairs + 1, m);
+  }
+
+  SimulationState& m_s;
+  QuasiNewtonOptions m_opt;
+  IncrementalPotential m_objective;
+  SparseCholesky m_factor;  // of H0 with m_factor_fixed's rows and columns those of the identity
+  std::vector<char> m_factor_fixed;
+  double m_dt = -1.0;
+  bool m_refix = false;
+  int m_components = 1;            // 1: H0 acts on DOFs; dim: one per-node matrix for all axes (Kronecker)
+  std::vector<int> m_held;         // unknowns fixed since the factorisation (the capacitance correction's E)
+  MatX m_w;                        // H0^-1 E, unknowns x c
+  Eigen::LLT<MatX> m_capacitance;  // of C = E^T H0^-1 E
+  MatX m_lambda;                   // c x components
+  MatX m_s_hist, m_y_hist;         // DOFs x history, a ring
+  VecX m_rho, m_alpha;
+  int m_pairs = 0, m_newest = -1;
+  VecX m_y, m_trial, m_grad, m_grad_trial, m_dir, m_q, m_fixed_grad;
+};
+
+}  // namespace
+
+std::unique_ptr<IntegratorStep> make_quasi_newton_step(SimulationState& s, const SimulatorOptions& options) {
+  return std::make_unique<QuasiNewtonStep>(s, options);
+}
+
+}  // namespace hooke::solve::detail
