@@ -143,6 +143,35 @@ VecX converged_reference(const model::Problem& problem, const solve::Dynamics& d
   return sim.positions();
 }
 
+// One row's run: an untimed first step, then `steps` timed ones, each checked (untimed) afterwards. `why` says
+// where the run left the admissible set (empty when it did not); the timing is then incomplete.
+StepTiming timed_run(solve::Simulator& sim, const Run& run, const Drag& drag, double dt, int steps, std::string& why) {
+  const bool budgeted = run.integrator == solve::Integrator::kQuasiNewton;
+  drag.before_step(sim, dt);
+  why = inadmissible(sim, sim.step(dt), 1, budgeted);
+  std::vector<double> ms;
+  StepTiming t;
+  for (int k = 0; k < steps && why.empty(); ++k) {
+    drag.before_step(sim, dt);
+    const auto t0 = Clock::now();
+    const solve::StepReport r = sim.step(dt);
+    ms.push_back(ms_since(t0));
+    t.iterations += r.iterations;
+    t.linear_iterations += r.linear_iterations;
+    t.not_converged += r.converged ? 0 : 1;
+    why = inadmissible(sim, r, k + 2, budgeted);
+  }
+  if (!why.empty()) return t;
+  t.integrator = run.name;
+  t.dt = dt;
+  t.median_ms = quantile(ms, 0.5);
+  t.p95_ms = quantile(ms, 0.95);
+  t.p99_ms = quantile(ms, 0.99);
+  t.iterations /= steps;
+  t.linear_iterations /= steps;
+  return t;
+}
+
 double relative_error(const VecX& x, const VecX& reference, const VecX& rest) {
   double error = 0.0, scale = 0.0;
   for (Eigen::Index i = 0; i < x.size() / 3; ++i) {
@@ -226,38 +255,15 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
           report.notes.push_back(std::string(run.name) + on + " not applicable: " + e.what());
           continue;
         }
-        const bool budgeted = run.integrator == solve::Integrator::kQuasiNewton;
         const double dt = is_explicit(run.integrator) ? 0.9 * sim->stable_time_step() : options.dt;
-        drag.before_step(*sim, dt);
-        std::string why = inadmissible(*sim, sim->step(dt), 1, budgeted);
-        std::vector<double> ms;
-        double iterations = 0.0, linear_iterations = 0.0;
-        int not_converged = 0;
-        for (int k = 0; k < options.steps && why.empty(); ++k) {
-          drag.before_step(*sim, dt);
-          const auto t0 = Clock::now();
-          const solve::StepReport r = sim->step(dt);
-          ms.push_back(ms_since(t0));
-          iterations += r.iterations;
-          linear_iterations += r.linear_iterations;
-          not_converged += r.converged ? 0 : 1;
-          why = inadmissible(*sim, r, k + 2, budgeted);
-        }
+        std::string why;
+        StepTiming t = timed_run(*sim, run, drag, dt, options.steps, why);
         if (!why.empty()) {
           report.notes.push_back(std::string(run.name) + on + " not reported: " + why);
           continue;
         }
-        StepTiming t;
         t.nodes = nodes;
         t.method = method;
-        t.integrator = run.name;
-        t.dt = dt;
-        t.median_ms = quantile(ms, 0.5);
-        t.p95_ms = quantile(ms, 0.95);
-        t.p99_ms = quantile(ms, 0.99);
-        t.iterations = iterations / options.steps;
-        t.linear_iterations = linear_iterations / options.steps;
-        t.not_converged = not_converged;
         if (!is_explicit(run.integrator) && run.integrator != solve::Integrator::kQuasiStatic && size < 2) {
           if (reference.size() == 0)
             reference = converged_reference(problem, dynamics, drag, options.dt, options.steps);

@@ -51,8 +51,13 @@ enum class GlobalSolve {
 
 GlobalSolve global_solve_from_name(std::string_view name);  ///< @throws InvalidArgument
 
-/// "rest" or "isotropic" (QuasiNewtonHessian in simulator.hpp). @throws InvalidArgument
-enum class QuasiNewtonHessian : int;
-QuasiNewtonHessian quasi_newton_hessian_from_name(std::string_view name);
+/// The initial Hessian of the quasi-newton integrator's L-BFGS.
+enum class QuasiNewtonHessian {
+  kRest,      ///< "rest": the step's Newton matrix at rest, M (1/dt^2 + alpha/dt) + (1 + beta/dt) K0
+  kIsotropic  ///< "isotropic": the same with each node pair's block of K0 replaced by a multiple of the identity
+              ///< (its trace x isotropic_scale / dim): one per-node factor for all axes, dim x cheaper to solve
+};
+
+QuasiNewtonHessian quasi_newton_hessian_from_name(std::string_view name);  ///< @throws InvalidArgument
 
 }  // namespace hooke::solve

@@ -26,13 +26,6 @@ inline NewtonOptions time_step_newton_options() {
   return o;
 }
 
-/// The initial Hessian of the quasi-newton integrator's L-BFGS.
-enum class QuasiNewtonHessian : int {
-  kRest,      ///< "rest": the step's Newton matrix at rest, M (1/dt^2 + alpha/dt) + (1 + beta/dt) K0
-  kIsotropic  ///< "isotropic": the same with each node pair's block of K0 replaced by a multiple of the identity
-              ///< (its trace x isotropic_scale / dim): one per-node factor for all axes, dim x cheaper to solve
-};
-
 /// The quasi-newton integrator's budget and stopping test (docs/simulation.md says how they were chosen).
 struct QuasiNewtonOptions {
   /// L-BFGS iterations per step at most: the real-time budget, default 8

@@ -33,6 +33,13 @@ void SimulationState::damping_product(const VecX& z, VecX& out) {
   if (dyn.mass_damping > 0.0) out += dyn.mass_damping * dyn.mass.cwiseProduct(z);
 }
 
+bool SimulationState::axes_alike() const {
+  const int d = model().dim();
+  for (Eigen::Index i = 0; i < nd; ++i)
+    if (dyn.mass(i) != dyn.mass(i - i % d) || fixed(i) != fixed(i - i % d)) return false;
+  return true;
+}
+
 void SimulationState::apply_prescribed(VecX& z) const {
   const bool given = problem.prescribed_positions.size() == z.size();
   for (Eigen::Index i = 0; i < nd; ++i)

@@ -29,6 +29,9 @@ struct SimulationState {
   const SparseMatrix& rest_stiffness();
   // out = D z = alpha M z + beta K0 z.
   void damping_product(const VecX& z, VecX& out);
+  // True when every node has the same mass on all its axes and is fixed on all axes or none: a per-node matrix
+  // then serves every axis (the Kronecker form of local/global's and quasi-newton's prefactored matrices).
+  bool axes_alike() const;
   // Sets the fixed DOFs of z to their positions now (prescribed, else rest).
   void apply_prescribed(VecX& z) const;
   // Explicit stability limit, s (Simulator::stable_time_step), cached until the fixed DOFs change.

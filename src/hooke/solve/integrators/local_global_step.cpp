@@ -42,10 +42,7 @@ class LocalGlobalStep final : public IntegratorStep {
   // a #nodes-square matrix then serves every axis (Kronecker form).
   void setup_global_matrix(double dt) {
     const int d = m_s.model().dim();
-    bool kronecker = m_s.dyn.stiffness_damping == 0.0;
-    for (Eigen::Index i = 0; i < m_s.nd && kronecker; ++i)
-      kronecker = m_s.dyn.mass(i) == m_s.dyn.mass(i - i % d) && m_s.fixed(i) == m_s.fixed(i - i % d);
-    m_components = kronecker ? d : 1;
+    m_components = m_s.dyn.stiffness_damping == 0.0 && m_s.axes_alike() ? d : 1;
     const int r = m_components, n = static_cast<int>(m_s.nd) / r, axes = d / r;
     std::vector<Triplet> t;
     for (const model::CentralSprings* b : m_spring_blocks)

@@ -34,7 +34,7 @@ class QuasiNewtonStep final : public IntegratorStep {
     const QuasiNewtonOptions& q = m_opt;
     if (q.max_iterations < 1 || q.history < 0 || !(q.tolerance > 0.0 && q.tolerance < 1.0))
       throw InvalidArgument("quasi-newton needs at least 1 iteration, a history >= 0 and a tolerance in (0, 1)");
-    for (VecX* w : {&m_y, &m_trial, &m_grad, &m_grad_trial, &m_dir, &m_q, &m_fixed_grad}) w->setZero(s.nd);
+    for (VecX* w : {&m_y, &m_trial, &m_grad, &m_grad_trial, &m_dir, &m_q}) w->setZero(s.nd);
     m_s_hist.setZero(s.nd, q.history);
     m_y_hist.setZero(s.nd, q.history);
     m_rho.setZero(q.history);
@@ -62,7 +62,7 @@ class QuasiNewtonStep final : public IntegratorStep {
       phi = m_objective.value(m_y);
     }
     m_objective.gradient(m_y, m_grad);
-    m_fixed_grad = m_objective.fixed_model_gradient();
+    bool gradient_at_y = true;  // the objective's last gradient() was at m_y (the probe force reuses it)
     StepReport r;
     double residual = m_grad.norm();
     const bool conservative = m_objective.conservative();
@@ -73,7 +73,7 @@ class QuasiNewtonStep final : public IntegratorStep {
              residual <= m_opt.tolerance * m_objective.force_scale();
     };
     for (; it < m_opt.max_iterations; ++it) {
-      if (done() || !std::isfinite(residual) || !std::isfinite(m_objective.force_scale())) break;
+      if (done() || !std::isfinite(residual * m_objective.force_scale())) break;
       two_loop();
       double slope = m_grad.dot(m_dir);
       if (!(slope < 0.0)) {  // the history gives no descent: start it again from H0
@@ -95,11 +95,12 @@ class QuasiNewtonStep final : public IntegratorStep {
         } else {
           m_objective.gradient(m_trial, m_grad_trial);
           accepted = std::isfinite(m_grad_trial.norm()) && m_grad_trial.norm() < (1.0 - 1e-4 * alpha) * residual;
+          gradient_at_y = false;  // until the trial is accepted
         }
       }
       if (!accepted) break;
       push_pair();
-      m_fixed_grad = m_objective.fixed_model_gradient();  // the last gradient() was at the accepted trial
+      gradient_at_y = true;  // at the accepted trial, the new m_y
       m_y.swap(m_trial);
       m_grad.swap(m_grad_trial);
       phi = phi_trial;
@@ -109,8 +110,10 @@ class QuasiNewtonStep final : public IntegratorStep {
     r.residual = residual;
     r.converged = done();
     s.advance(m_y, dt);
-    s.fixed_grad.swap(m_fixed_grad);  // the probe force without another gradient evaluation
-    s.fixed_grad_valid = true;
+    if (gradient_at_y) {  // the probe force without another gradient evaluation
+      s.fixed_grad = m_objective.fixed_model_gradient();
+      s.fixed_grad_valid = true;
+    }
     return r;
   }
 
@@ -125,10 +128,7 @@ class QuasiNewtonStep final : public IntegratorStep {
     const double k_factor = 1.0 + m_s.dyn.stiffness_damping / dt;
     const int d = m_s.model().dim();
     const std::vector<char>& fixed = m_s.problem.fixed_dofs;
-    bool kronecker = m_opt.initial_hessian == QuasiNewtonHessian::kIsotropic;
-    for (Eigen::Index i = 0; i < m_s.nd && kronecker; ++i)
-      kronecker = m_s.dyn.mass(i) == m_s.dyn.mass(i - i % d) &&
-                  fixed[static_cast<size_t>(i)] == fixed[static_cast<size_t>(i - i % d)];
+    const bool kronecker = m_opt.initial_hessian == QuasiNewtonHessian::kIsotropic && m_s.axes_alike();
     m_components = kronecker ? d : 1;
     for (bool project : {false, true}) {
       model::HessianAssembly& a = m_s.hessian_assembly();
@@ -257,7 +257,7 @@ class QuasiNewtonStep final : public IntegratorStep {
   MatX m_s_hist, m_y_hist;         // DOFs x history, a ring
   VecX m_rho, m_alpha;
   int m_pairs = 0, m_newest = -1;
-  VecX m_y, m_trial, m_grad, m_grad_trial, m_dir, m_q, m_fixed_grad;
+  VecX m_y, m_trial, m_grad, m_grad_trial, m_dir, m_q;
 };
 
 }  // namespace
