@@ -3,7 +3,8 @@
 # examples/ against the installed package, then rebuilds the unit tests with AddressSanitizer +
 # UndefinedBehaviorSanitizer (at -O1 -g1, the cheapest build that keeps file:line in reports) and runs them again (the
 # CLI end-to-end tests, the 300-step benchmark-cylinder runs and the any-nu accuracy sweep
-# only in the -Werror pass, to keep .ci/run within its time budget), and fuzzes each mesh reader for 20 s
+# only in the -Werror pass, to keep .ci/run within its time budget), rebuilds the interactive layer's tests (the
+# physics thread and its front-end side) with ThreadSanitizer and runs them, and fuzzes each mesh reader for 20 s
 # (scripts/fuzz.sh, clang-14 libFuzzer).
 # Usage: scripts/test.sh [--no-sanitizers]
 set -euo pipefail
@@ -22,8 +23,14 @@ bash scripts/check_install.sh build/ci   # examples/ against the installed packa
 
 if [ "${1:-}" != "--no-sanitizers" ]; then
   cmake --preset asan > /dev/null
-  cmake --build --preset asan -j "$jobs" --target hooke_tests
-  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs" -L unit \
+  cmake --build --preset asan -j "$jobs" --target hooke_tests hooke_interactive_tests
+  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs" -L "unit|interactive" \
     -E "BenchmarkCylinderUnderGravity|AnyNuAgainstFem"
+  # One OpenMP thread, and CHOLMOD's own libgomp threads suppressed (tests/tsan.supp): libgomp is not
+  # instrumented, so its barriers would read as races. The single-threaded 300-step drag only in the passes above.
+  cmake --preset tsan > /dev/null
+  cmake --build --preset tsan -j "$jobs" --target hooke_interactive_tests
+  OMP_NUM_THREADS=1 TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$PWD/tests/tsan.supp" \
+    ctest --preset tsan -j "$jobs" -L interactive -E QuasiStaticDragFeelsTheStaticHoldingForce
   bash scripts/fuzz.sh 20   # every mesh reader under libFuzzer for 20 s from the committed corpora (tests/fuzz)
 fi

@@ -6,15 +6,14 @@
 #include <imgui.h>
 
 #include <chrono>
-#include <future>
 #include <hooke/calibrate/model_file.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/interactive/fields.hpp>
+#include <hooke/interactive/latest_job.hpp>
 #include <hooke/interactive/physics_loop.hpp>
 #include <hooke/interactive/picking.hpp>
 #include <hooke/io/series.hpp>
 #include <memory>
-#include <mutex>
 #include <thread>
 
 #include "camera.hpp"
@@ -67,12 +66,6 @@ struct MouseProbe {
   bool space_down = false, r_down = false;
 };
 
-// What drawing commands of the script the front end still has to carry out.
-struct DrawingQueue {
-  std::mutex mutex;
-  std::vector<interactive::ScriptCommand> pending;
-};
-
 class Viewer {
  public:
   Viewer(const ViewerOptions& o, GLFWwindow* window)
@@ -92,11 +85,7 @@ class Viewer {
     m_scene_size = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm();
     m_camera.fit(rest.colwise().minCoeff().transpose(), rest.colwise().maxCoeff().transpose());
     m_camera.set_shift(o.no_panel ? 0.0 : 0.5 * kPanelWidth);  // centred in what the panel leaves free
-    if (!o.script.empty())
-      m_loop.set_script(o.script, [this](const interactive::ScriptCommand& c) {
-        std::lock_guard lock(m_drawing.mutex);
-        m_drawing.pending.push_back(c);
-      });
+    if (!o.script.empty()) m_loop.set_script(o.script);
     if (!o.record.empty()) m_series = std::make_unique<io::SeriesWriter>(o.record, o.model.mesh);
     if (m_state.field == interactive::ColorField::kError) m_state.ghost = Ghost::kLinear;
   }
@@ -108,12 +97,8 @@ class Viewer {
     bool quit = false;
     while (!glfwWindowShouldClose(m_window) && !quit) {
       glfwPollEvents();
-      m_loop.snapshot(m_snap);
-      std::vector<interactive::ScriptCommand> commands;
-      {
-        std::lock_guard lock(m_drawing.mutex);
-        commands.swap(m_drawing.pending);
-      }
+      // The script's drawing commands with the state of their time (the physics waits until drawing_done()).
+      const std::vector<interactive::ScriptCommand> commands = m_loop.drawing_commands(m_snap);
       std::vector<std::string> screenshots;
       for (const interactive::ScriptCommand& c : commands) quit |= carry_out(c, screenshots);
       handle_input();
@@ -196,18 +181,21 @@ class Viewer {
       return interactive::fem_probe_equilibrium(model, law, clamped, grabbed, targets, gravity);
     };
     m_state.ghost_message = "solving ...";
-    m_ghost_job = std::async(now ? std::launch::deferred : std::launch::async, std::move(job));
-    if (now) poll_ghost(true);
+    if (now) {
+      m_ghost.run_now(job);
+    } else {
+      m_ghost.submit(std::move(job));  // an older solve still running is left to finish: its result is dropped
+    }
+    poll_ghost();
   }
 
-  void poll_ghost(bool wait = false) {
-    if (!m_ghost_job.valid()) return;
-    if (!wait && m_ghost_job.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  void poll_ghost() {
     try {
-      interactive::ProbeEquilibrium r = m_ghost_job.get();
-      m_state.ghost_positions = std::move(r.positions);
-      m_state.ghost_force = std::move(r.holding_force);
-      m_state.ghost_message = r.message;
+      std::optional<interactive::ProbeEquilibrium> r = m_ghost.take();
+      if (!r) return;
+      m_state.ghost_positions = std::move(r->positions);
+      m_state.ghost_force = std::move(r->holding_force);
+      m_state.ghost_message = r->message;
     } catch (const std::exception& e) {
       m_state.ghost_positions.reset();
       m_state.ghost_force.resize(0);
@@ -303,14 +291,16 @@ class Viewer {
         break;
       }
       case interactive::ColorField::kWeights: {
-        bool have = false;
-        m_loop.with([&](const interactive::LiveSimulation& sim) {
-          if (const auto* penalty = sim.volume_penalty()) {
-            value = penalty->weights(m_snap.positions, m_snap.interaction ? &*m_snap.interaction : nullptr);
-            have = true;
-          }
-        });
-        if (!have) value.setOnes();
+        // The blocks are shared and immutable: the weights are computed here, not under the physics' lock.
+        if (m_built_version != m_snap.model_version) {
+          m_loop.with([&](const interactive::LiveSimulation& sim) { m_built = sim.built_model(); });
+          m_built_version = m_snap.model_version;
+        }
+        if (m_built.volume_penalty)
+          value =
+              m_built.volume_penalty->weights(m_snap.positions, m_snap.interaction ? &*m_snap.interaction : nullptr);
+        else
+          value.setOnes();
         lo = 0.0;
         hi = 1.0;
         break;
@@ -391,18 +381,19 @@ class Viewer {
   int m_dim;
   interactive::SurfaceView m_view;
   Renderer m_renderer;
-  interactive::PhysicsLoop m_loop;
+  interactive::PhysicsLoop m_loop;  // its thread calls nothing of the viewer's
   ViewState m_state;
   Camera m_camera;
   MouseProbe m_mouse;
-  DrawingQueue m_drawing;
   interactive::Snapshot m_snap;
   VecX m_rest;
   double m_scene_size = 1.0;
-  std::future<interactive::ProbeEquilibrium> m_ghost_job;
+  interactive::LatestJob<interactive::ProbeEquilibrium> m_ghost;
   std::unique_ptr<io::SeriesWriter> m_series;
   calibrate::SpringModel m_springs;
   long m_springs_version = -1;
+  calibrate::BuiltModel m_built;  // the model's blocks, for the Eq. 4 weights
+  long m_built_version = -1;
   int m_width = 1, m_height = 1, m_frames = 0;
   double m_draw_rate_total = 0.0, m_draw_seconds = 0.0;
 };

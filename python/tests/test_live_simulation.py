@@ -48,3 +48,51 @@ def test_apply_recalibrates_and_refuses():
     with pytest.raises(hooke.Error):
         sim.apply(method="surface")
     assert sim.model.material.nu == 0.45
+
+
+def test_properties_are_copies_that_outlive_reset_and_apply():
+    # positions, velocities and model were views into the simulator and an internal reference: apply() and reset()
+    # replace what they pointed at, so arrays taken before read freed memory (7.0e9 was seen) afterwards.
+    model = cylinder_model("any-nu-tet")
+    sim = hooke.LiveSimulation(model, gravity=True)
+    for _ in range(20):
+        sim.step()
+    x, v, m = sim.positions, sim.velocities, sim.model
+    x0, v0, k0 = np.array(x), np.array(v), np.array(m.stiffness)
+    sim.apply(poisson=0.45)
+    sim.reset()
+    junk = [np.full(x.shape, 7.0e9) for _ in range(50)]  # reuse what was freed
+    assert np.array_equal(x, x0) and np.array_equal(v, v0)
+    assert np.array_equal(m.stiffness, k0) and m.material.nu == 0.3
+    assert np.abs(np.asarray(sim.positions) - np.asarray(model.mesh.points)).max() == 0.0  # reset: at rest
+    assert len(junk) == 50
+
+
+def test_a_device_thread_drags_while_another_steps():
+    import threading
+
+    model = cylinder_model("lloyd-tet")
+    sim = hooke.LiveSimulation(model)
+    node = top_node(model)
+    sim.grab([node])
+    stop = threading.Event()
+    errors = []
+
+    def device():
+        k = 0
+        try:
+            while not stop.is_set():
+                sim.drag([1e-6 * (k % 1000), 0.0, 0.0])
+                assert np.isfinite(sim.positions).all()
+                k += 1
+        except Exception as e:  # reported below
+            errors.append(e)
+
+    t = threading.Thread(target=device)
+    t.start()
+    for _ in range(300):
+        sim.step()
+    stop.set()
+    t.join()
+    assert not errors
+    assert abs(sim.time - 0.3) < 1e-12

@@ -1,6 +1,6 @@
 // The viewer's physics without a window: a quasi-static drag's reaction force against an independently assembled
 // static equilibrium, settings changed live (the springs then equal a fresh calibration; the deformation is kept),
-// failed recalibrations that change nothing, and the physics thread driven by a script.
+// failed recalibrations that change nothing, script settings.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -14,29 +14,10 @@
 #include <hooke/solve/static_equilibrium.hpp>
 #include <iostream>
 #include <thread>
+#include "interactive/support.hpp"
 
 namespace hooke::interactive {
 namespace {
-
-LiveSettings settings(const std::string& method = "lloyd-tet", double nu = 0.3) {
-  LiveSettings s;
-  s.method = method;
-  s.material = {material::Law::kLinear, 14630.0, nu};
-  s.damping_mass = 60.0;
-  return s;
-}
-
-mesh::Mesh cylinder() { return mesh::tet_cylinder(0.01, 0.02, 8, 5); }
-
-// The top node nearest the axis.
-int top_node(const mesh::Mesh& m) {
-  int best = 0;
-  for (int i = 0; i < m.node_count(); ++i) {
-    const auto x = m.nodes.row(i), b = m.nodes.row(best);
-    if (x(2) > b(2) + 1e-12 || (std::abs(x(2) - b(2)) < 1e-12 && x.head(2).norm() < b.head(2).norm())) best = i;
-  }
-  return best;
-}
 
 // The holding force of the equilibrium with `node` held at rest + offset, the bottom clamped: a problem assembled
 // here by hand, solved by solve::static_equilibrium, and the reaction -(dE/dx - f) at the node.
@@ -161,98 +142,6 @@ TEST(LiveSimulation, SurfaceModelWeightsFollowTheProbe) {
   EXPECT_GT(sim.probe_force().norm(), 0.0);
   sim.release();
   EXPECT_FALSE(sim.interaction().has_value());
-}
-
-TEST(PhysicsLoop, RunsAScriptAndHandsDrawingCommandsOver) {
-  const mesh::Mesh m = cylinder();
-  const int node = top_node(m);
-  const std::string script = "0 grab " + std::to_string(node) +
-                             "\n"
-                             "0.001 drag 0.001 0 0 over 0.05\n"
-                             "0.06 screenshot a.png\n"
-                             "0.06 set poisson 0.2\n"
-                             "0.08 release\n"
-                             "0.1 quit\n";
-  PhysicsLoop loop(LiveSimulation(m, settings()), false);
-  std::atomic<int> drawn{0};
-  std::vector<ScriptCommand> seen;
-  std::mutex mutex;
-  loop.set_script(parse_script(script, "test"), [&](const ScriptCommand& c) {
-    std::lock_guard lock(mutex);
-    seen.push_back(c);
-    ++drawn;
-  });
-  loop.start();
-  Snapshot snap;
-  for (int wait = 0; wait < 20000 && !loop.script_finished(); ++wait) {
-    if (drawn > 0) {
-      loop.snapshot(snap);
-      if (seen.size() == 1) {
-        // The physics waits at the screenshot's time: the state is the one at 0.06 s, dragged by 1 mm.
-        EXPECT_NEAR(snap.stats.sim_time, 0.06, 1e-3);
-        EXPECT_NEAR(snap.probe_offset.norm(), 1e-3, 1e-12);
-      }
-      drawn = 0;
-      loop.drawing_done();
-    }
-    std::this_thread::sleep_for(std::chrono::microseconds(200));
-  }
-  loop.stop();
-  ASSERT_EQ(seen.size(), 2u);
-  EXPECT_EQ(seen[0].action, ScriptAction::kScreenshot);
-  EXPECT_EQ(seen[1].action, ScriptAction::kQuit);
-  loop.snapshot(snap);
-  EXPECT_EQ(snap.settings.material.poisson_ratio, 0.2);
-  EXPECT_TRUE(snap.grabbed.empty());
-  EXPECT_TRUE(snap.stats.error.empty()) << snap.stats.error;
-  EXPECT_GE(snap.stats.steps, 100);
-}
-
-TEST(PhysicsLoop, ABadCommandIsReportedNotThrown) {
-  PhysicsLoop loop(LiveSimulation(cylinder(), settings()), false);
-  loop.post([](LiveSimulation& sim) {
-    LiveSettings s = sim.settings();
-    s.method = "no-such-method";
-    sim.apply(s);
-  });
-  loop.start();
-  for (int k = 0; k < 1000 && loop.stats().error.empty(); ++k)
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  loop.stop();
-  EXPECT_NE(loop.stats().error.find("no-such-method"), std::string::npos) << loop.stats().error;
-  EXPECT_GT(loop.stats().steps, 0);
-}
-
-// The rate shown is steps completed per wall second: a loop whose steps take longer than their period (dt = 10 us,
-// a 100 kHz target) reports the rate it achieves, measured from outside, and says it is behind; at dt = 1 ms and
-// paced it never reports more than its target.
-TEST(PhysicsLoop, AchievedRateIsStepsPerWallSecond) {
-  {
-    PhysicsLoop loop(LiveSimulation(cylinder(), settings()), true);
-    loop.start();
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    const PhysicsStats s = loop.stats();
-    loop.stop();
-    EXPECT_LE(s.achieved_rate, 1.001 * s.target_rate);
-    EXPECT_GT(s.steps, 0);
-  }
-  LiveSettings fast = settings();
-  fast.dt = 1e-5;
-  PhysicsLoop loop(LiveSimulation(cylinder(), fast), true);
-  loop.start();
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  const auto t0 = std::chrono::steady_clock::now();
-  const long steps0 = loop.stats().steps;
-  std::this_thread::sleep_for(std::chrono::milliseconds(600));
-  const PhysicsStats slow = loop.stats();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  loop.stop();
-  const double measured = static_cast<double>(slow.steps - steps0) / seconds;
-  std::cout << "[rate] dt 10 us: " << measured << " steps per wall second, reported " << slow.achieved_rate
-            << " Hz (target " << slow.target_rate << "), median step " << slow.step_ms_median << " ms\n";
-  ASSERT_LT(measured, 0.9 * slow.target_rate) << "the steps were not slower than their period";
-  EXPECT_TRUE(slow.behind);
-  EXPECT_NEAR(slow.achieved_rate, measured, 0.35 * measured);
 }
 
 TEST(ApplySetting, ParsesAndRefuses) {

@@ -4,8 +4,10 @@
 #include <pybind11/stl.h>
 #include <bindings.hpp>
 #include <core/arrays.hpp>
+#include <hooke/interactive/guarded.hpp>
 #include <hooke/interactive/live_simulation.hpp>
 #include <hooke/interactive/physics_loop.hpp>
+#include <utility>
 
 namespace py = pybind11;
 
@@ -31,17 +33,35 @@ interactive::LiveSettings with_settings(interactive::LiveSettings s, const py::k
   return s;
 }
 
+// hooke.LiveSimulation: the simulation behind one lock, so that a device thread may drag while another steps
+// (step() releases the GIL). Every getter returns a copy: the simulator's arrays are replaced by reset() and
+// apply(), so a view of them would dangle.
+using SharedSimulation = interactive::Guarded<interactive::LiveSimulation>;
+
+// f(simulation) under the lock, without the GIL (a thread stepping holds the lock, not the GIL).
+template <typename F>
+auto locked(SharedSimulation& s, F&& f) {
+  py::gil_scoped_release release;
+  return s.with(std::forward<F>(f));
+}
+
+py::array_t<double> rows_copy(const VecX& v, int dim) {
+  const py::ssize_t d = dim, n = v.size() / dim;
+  py::array_t<double> a({n, d});
+  std::copy(v.data(), v.data() + v.size(), a.mutable_data());
+  return a;
+}
+
 }  // namespace
 
 void define_live_simulation(py::module_& m) {
   using interactive::LiveSimulation;
-  const auto dim = [](const LiveSimulation& s) { return s.model().mesh.dim(); };
-  const auto positions = [](LiveSimulation& s) -> const VecX& { return s.positions(); };
-  const auto velocities = [](LiveSimulation& s) -> const VecX& { return s.velocities(); };
-  py::class_<LiveSimulation>(m, "LiveSimulation",
-                             "The viewer's physics: a model run in real time by its caller, the bottom clamped (the "
-                             "surface model: held by its anchors), a probe that grabs and drives nodes, settings "
-                             "changed while it runs.")
+  using Sim = LiveSimulation;
+  py::class_<SharedSimulation>(m, "LiveSimulation",
+                               "The viewer's physics: a model run in real time by its caller, the bottom clamped (the "
+                               "surface model: held by its anchors), a probe that grabs and drives nodes, settings "
+                               "changed while it runs. Thread-safe: one thread may step while another drags; every "
+                               "property is a copy.")
       .def(py::init([](const calibrate::CalibratedModel& model, const std::string& integrator, double dt,
                        const py::kwargs& kwargs) {
              interactive::LiveSettings s;
@@ -50,42 +70,73 @@ void define_live_simulation(py::module_& m) {
              s.density = model.density;
              s.simulator.integrator = solve::integrator_from_name(integrator);
              s.dt = dt;
-             return LiveSimulation(model, with_settings(s, kwargs));
+             return std::make_unique<SharedSimulation>(LiveSimulation(model, with_settings(s, kwargs)));
            }),
            py::arg("model"), py::arg("integrator") = "quasi-newton", py::arg("dt") = 1e-3,
            "LiveSimulation(model, integrator='quasi-newton', dt=1e-3, **settings): settings as in the viewer's "
            "scripts (gravity=True, damping_mass=..., damping_stiffness=..., young=..., poisson=..., method=...).")
       .def(
-          "apply", [](LiveSimulation& s, const py::kwargs& kwargs) { s.apply(with_settings(s.settings(), kwargs)); },
+          "apply",
+          [](SharedSimulation& s, const py::kwargs& kwargs) {
+            const interactive::LiveSettings current = locked(s, [](const Sim& sim) { return sim.settings(); });
+            const interactive::LiveSettings next = with_settings(current, kwargs);
+            locked(s, [&](Sim& sim) { sim.apply(next); });
+          },
           "apply(**settings): e.g. apply(poisson=0.45) recalibrates; the deformation and the grab are kept; when it "
           "fails nothing changes.")
       .def(
-          "step",
-          [](LiveSimulation& s) {
-            py::gil_scoped_release release;
-            return s.step();
-          },
+          "step", [](SharedSimulation& s) { return locked(s, [](Sim& sim) { return sim.step(); }); },
           "One step of dt seconds; returns its StepReport. Raises SolverFailure when it inverts an element.")
-      .def("reset", &LiveSimulation::reset, "Back to rest, time 0, probe released.")
-      .def("grab", &LiveSimulation::grab, py::arg("nodes"), "Grabs nodes where they are.")
+      .def(
+          "reset", [](SharedSimulation& s) { locked(s, [](Sim& sim) { sim.reset(); }); },
+          "Back to rest, time 0, probe released.")
+      .def(
+          "grab",
+          [](SharedSimulation& s, const std::vector<int>& nodes) { locked(s, [&](Sim& sim) { sim.grab(nodes); }); },
+          py::arg("nodes"), "Grabs nodes where they are.")
       .def(
           "drag",
-          [](LiveSimulation& s, const py::object& offset) {
-            s.drag(vector_argument(offset, "offset", s.model().mesh.dim()));
+          [](SharedSimulation& s, const py::object& offset) {
+            const int d = locked(s, [](const Sim& sim) { return sim.model().mesh.dim(); });
+            const VecX u = vector_argument(offset, "offset", d);
+            locked(s, [&](Sim& sim) { sim.drag(u); });
           },
           py::arg("offset"), "Drives the grabbed nodes to their grab positions + offset (m, dim).")
-      .def("release", &LiveSimulation::release, "Lets go.")
+      .def(
+          "release", [](SharedSimulation& s) { locked(s, [](Sim& sim) { sim.release(); }); }, "Lets go.")
       .def_property_readonly(
-          "probe_force", [](const LiveSimulation& s) { return as_list(s.probe_force()); },
+          "probe_force",
+          [](SharedSimulation& s) { return as_list(locked(s, [](const Sim& sim) { return sim.probe_force(); })); },
           "the force the body exerts on the probe after the last step, N (dim)")
-      .def_property_readonly("time", &LiveSimulation::time, "simulated time, s")
-      .def_property_readonly("positions", rows_property<LiveSimulation>(positions, dim),
-                             "(N, dim) node positions, m (read-only view)")
-      .def_property_readonly("velocities", rows_property<LiveSimulation>(velocities, dim),
-                             "(N, dim) node velocities, m/s (read-only view)")
-      .def_property_readonly("model", &LiveSimulation::model, "the model being simulated (a copy)")
-      .def_property_readonly("clamped_nodes", &LiveSimulation::clamped_nodes, "the nodes held at rest")
-      .def_property_readonly("grabbed", &LiveSimulation::grabbed, "the grabbed nodes");
+      .def_property_readonly(
+          "time", [](SharedSimulation& s) { return locked(s, [](const Sim& sim) { return sim.time(); }); },
+          "simulated time, s")
+      .def_property_readonly(
+          "positions",
+          [](SharedSimulation& s) {
+            const auto [x, d] =
+                locked(s, [](const Sim& sim) { return std::pair(sim.positions(), sim.model().mesh.dim()); });
+            return rows_copy(x, d);
+          },
+          "(N, dim) node positions, m (a copy)")
+      .def_property_readonly(
+          "velocities",
+          [](SharedSimulation& s) {
+            const auto [v, d] =
+                locked(s, [](const Sim& sim) { return std::pair(sim.velocities(), sim.model().mesh.dim()); });
+            return rows_copy(v, d);
+          },
+          "(N, dim) node velocities, m/s (a copy)")
+      .def_property_readonly(
+          "model", [](SharedSimulation& s) { return locked(s, [](const Sim& sim) { return sim.model(); }); },
+          "the model being simulated (a copy)")
+      .def_property_readonly(
+          "clamped_nodes",
+          [](SharedSimulation& s) { return locked(s, [](const Sim& sim) { return sim.clamped_nodes(); }); },
+          "the nodes held at rest")
+      .def_property_readonly(
+          "grabbed", [](SharedSimulation& s) { return locked(s, [](const Sim& sim) { return sim.grabbed(); }); },
+          "the grabbed nodes");
   m.def(
       "fem_probe_equilibrium",
       [](const calibrate::CalibratedModel& model, const std::string& law, const std::vector<int>& clamped,

@@ -238,6 +238,7 @@ const VecX& LiveSimulation::rest_positions() const { return m->built.model->rest
 const calibrate::CalibratedModel& LiveSimulation::model() const { return m->model; }
 long LiveSimulation::model_version() const { return m->model_version; }
 const surface::VolumePenaltyBlock* LiveSimulation::volume_penalty() const { return m->built.volume_penalty; }
+calibrate::BuiltModel LiveSimulation::built_model() const { return m->built; }
 const std::optional<model::Interaction>& LiveSimulation::interaction() const { return m->interaction; }
 const std::vector<int>& LiveSimulation::clamped_nodes() const { return m->clamped; }
 double LiveSimulation::kinetic_energy() const { return m->sim->kinetic_energy(); }

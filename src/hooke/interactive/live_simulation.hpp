@@ -93,6 +93,9 @@ class LiveSimulation {
   long model_version() const;
   /// The surface model's volume penalty (null for other models): Eq. 4 weights for drawing.
   const surface::VolumePenaltyBlock* volume_penalty() const;
+  /// The term blocks being simulated, shared: they stay valid after apply() replaces them, and being immutable
+  /// they may be evaluated from another thread while the simulation steps (the viewer's Eq. 4 weights).
+  calibrate::BuiltModel built_model() const;
   /// The surface model's current interaction (the probe's point and direction), if any.
   const std::optional<model::Interaction>& interaction() const;
   /// Nodes clamped at the bottom (empty for the surface model), model numbering.

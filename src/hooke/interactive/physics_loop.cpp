@@ -52,6 +52,16 @@ struct StepClock {
   }
 };
 
+// Records the thread holding the simulation's lock for as long as it lives (declared after the lock, so it ends
+// first): with() called by that thread runs at once instead of deadlocking.
+struct OwnerMark {
+  std::atomic<std::thread::id>& owner;
+  explicit OwnerMark(std::atomic<std::thread::id>& o) : owner(o) { owner = std::this_thread::get_id(); }
+  ~OwnerMark() { owner = std::thread::id(); }
+  OwnerMark(const OwnerMark&) = delete;
+  OwnerMark& operator=(const OwnerMark&) = delete;
+};
+
 }  // namespace
 
 void apply_setting(LiveSettings& s, const std::string& key, const std::string& value) {
@@ -81,7 +91,8 @@ void apply_setting(LiveSettings& s, const std::string& key, const std::string& v
 
 PhysicsLoop::PhysicsLoop(LiveSimulation simulation, bool realtime, int threads)
     : m_sim(std::move(simulation)), m_realtime(realtime), m_threads(std::max(threads, 1)) {
-  m_stats.target_rate = 1.0 / m_sim.settings().dt;
+  m_work_stats.target_rate = 1.0 / m_sim.settings().dt;
+  stage();
   publish();
 }
 
@@ -98,7 +109,7 @@ void PhysicsLoop::stop() {
     m_waiting_for_drawing = false;
   }
   m_wake.notify_all();
-  if (m_thread.joinable()) m_thread.join();
+  if (m_thread.joinable() && m_thread.get_id() != std::this_thread::get_id()) m_thread.join();
 }
 
 void PhysicsLoop::post(std::function<void(LiveSimulation&)> command) {
@@ -106,17 +117,27 @@ void PhysicsLoop::post(std::function<void(LiveSimulation&)> command) {
   m_commands.push_back(std::move(command));
 }
 
-void PhysicsLoop::with(const std::function<void(const LiveSimulation&)>& command) {
+// m_sim_mutex for a thread other than the physics: it announces itself in m_waiters, and the physics thread, which
+// takes the lock again right after each step, yields until the waiters are through.
+std::unique_lock<std::mutex> PhysicsLoop::lock_simulation() const {
   ++m_waiters;
-  std::lock_guard lock(m_mutex);  // the physics thread holds this lock while it steps
+  std::unique_lock lock(m_sim_mutex);
   --m_waiters;
+  return lock;
+}
+
+void PhysicsLoop::with(const std::function<void(const LiveSimulation&)>& command) {
+  if (m_sim_owner.load() == std::this_thread::get_id()) {  // re-entry (or the physics thread): already held
+    command(m_sim);
+    return;
+  }
+  const std::unique_lock lock = lock_simulation();
+  const OwnerMark mark(m_sim_owner);
   command(m_sim);
 }
 
 bool PhysicsLoop::snapshot(Snapshot& out) const {
-  ++m_waiters;
   std::lock_guard lock(m_mutex);
-  --m_waiters;
   if (out.version == m_latest.version) return false;
   out = m_latest;
   return true;
@@ -124,13 +145,16 @@ bool PhysicsLoop::snapshot(Snapshot& out) const {
 
 PhysicsStats PhysicsLoop::stats() const {
   std::lock_guard lock(m_mutex);
-  return m_stats;
+  return m_latest.stats;
 }
 
 void PhysicsLoop::set_paused(bool paused) {
-  std::lock_guard lock(m_mutex);
-  m_paused = paused;
-  m_stats.paused = paused;
+  {
+    std::lock_guard lock(m_mutex);
+    m_paused = paused;
+    m_latest.stats.paused = paused;
+  }
+  m_wake.notify_all();
 }
 
 bool PhysicsLoop::paused() const {
@@ -138,11 +162,20 @@ bool PhysicsLoop::paused() const {
   return m_paused;
 }
 
-void PhysicsLoop::set_script(std::vector<ScriptCommand> script, DrawingHandler drawing) {
+void PhysicsLoop::set_script(std::vector<ScriptCommand> script, bool front_end_draws) {
+  if (m_thread.joinable()) throw InvalidArgument("PhysicsLoop::set_script: the physics thread is already running");
   std::lock_guard lock(m_mutex);
   m_script = std::move(script);
   m_script_next = 0;
-  m_drawing = std::move(drawing);
+  m_front_end_draws = front_end_draws;
+}
+
+std::vector<ScriptCommand> PhysicsLoop::drawing_commands(Snapshot& out) {
+  std::lock_guard lock(m_mutex);
+  std::vector<ScriptCommand> commands;
+  commands.swap(m_pending_drawing);
+  if (out.version != m_latest.version) out = m_latest;
+  return commands;
 }
 
 void PhysicsLoop::drawing_done() {
@@ -155,13 +188,12 @@ void PhysicsLoop::drawing_done() {
 
 bool PhysicsLoop::script_finished() const {
   std::lock_guard lock(m_mutex);
-  return m_script_next >= m_script.size() && !m_waiting_for_drawing;
+  return m_script_next.load() >= m_script.size() && !m_waiting_for_drawing && m_pending_drawing.empty();
 }
 
-// Under m_mutex.
-void PhysicsLoop::publish() {
-  Snapshot& s = m_latest;
-  ++s.version;
+// Physics thread, m_sim_mutex held: the state of the simulation into m_staging (no allocation once sizes settle).
+void PhysicsLoop::stage() {
+  Snapshot& s = m_staging;
   s.positions = m_sim.positions();
   s.probe_force = m_sim.probe_force();
   s.grabbed = m_sim.grabbed();
@@ -170,16 +202,38 @@ void PhysicsLoop::publish() {
   s.interaction = m_sim.interaction();
   s.settings = m_sim.settings();
   s.model_version = m_sim.model_version();
-  m_stats.sim_time = m_sim.time();
-  s.stats = m_stats;
+  m_work_stats.sim_time = m_sim.time();
+  s.stats = m_work_stats;
 }
 
-// Under m_mutex: the script's commands whose time has come. Drawing commands stop here until drawing_done().
-void PhysicsLoop::run_script_commands() {
+// m_staging becomes the latest snapshot; the old one is m_staging's storage for the next stage().
+void PhysicsLoop::publish() {
+  std::lock_guard lock(m_mutex);
+  m_staging.version = m_latest.version + 1;
+  m_staging.stats.paused = m_paused;
+  std::swap(m_staging, m_latest);
+}
+
+// Physics thread, m_sim_mutex held: the front end's commands, each caught on its own.
+void PhysicsLoop::run_commands(std::deque<std::function<void(LiveSimulation&)>>& commands) {
+  while (!commands.empty()) {
+    auto command = std::move(commands.front());
+    commands.pop_front();
+    try {
+      command(m_sim);
+      m_work_stats.target_rate = 1.0 / m_sim.settings().dt;
+    } catch (const std::exception& e) {
+      m_work_stats.error = e.what();
+    }
+  }
+}
+
+// Physics thread, m_sim_mutex held: the script's commands whose time has come. A drawing command is published with
+// the state of its time and handed to the front end; true when the physics must then wait for drawing_done().
+bool PhysicsLoop::run_script_commands() {
   const int d = m_sim.model().mesh.dim();
-  while (m_script_next < m_script.size() && !m_waiting_for_drawing &&
-         m_script[m_script_next].time <= m_sim.time() + 1e-9 * m_sim.settings().dt) {
-    const ScriptCommand& c = m_script[m_script_next++];
+  while (m_script_next < m_script.size() && m_script[m_script_next].time <= m_sim.time() + 1e-9 * m_sim.settings().dt) {
+    const ScriptCommand& c = m_script[m_script_next];
     try {
       switch (c.action) {
         case ScriptAction::kGrab: m_sim.grab(c.nodes); break;
@@ -208,26 +262,37 @@ void PhysicsLoop::run_script_commands() {
           LiveSettings s = m_sim.settings();
           apply_setting(s, c.key, c.value);
           m_sim.apply(s);
-          m_stats.target_rate = 1.0 / s.dt;
-          publish();
+          m_work_stats.target_rate = 1.0 / s.dt;
           break;
         }
         case ScriptAction::kReset:
           m_drag_t1 = -1.0;
           m_sim.reset();
           break;
-        case ScriptAction::kPause: m_paused = m_stats.paused = true; break;
-        case ScriptAction::kResume: m_paused = m_stats.paused = false; break;
-        default:  // drawing: the front end, with the state of this time
-          publish();
-          m_waiting_for_drawing = m_drawing != nullptr;
-          if (m_drawing) m_drawing(c);  // the handler must not call back into the loop: it queues the command
+        case ScriptAction::kPause:
+        case ScriptAction::kResume: {
+          std::lock_guard lock(m_mutex);
+          m_paused = c.action == ScriptAction::kPause;
           break;
+        }
+        default:  // drawing: the front end takes it with the state of this time
+          if (!m_front_end_draws) break;
+          ++m_script_next;
+          stage();
+          {
+            std::lock_guard lock(m_mutex);
+            m_pending_drawing.push_back(c);
+            m_waiting_for_drawing = true;
+          }
+          publish();
+          return true;
       }
     } catch (const std::exception& e) {
-      m_stats.error = "script line " + std::to_string(c.line) + ": " + e.what();
+      m_work_stats.error = "script line " + std::to_string(c.line) + ": " + e.what();
     }
+    ++m_script_next;
   }
+  return false;
 }
 
 void PhysicsLoop::run() {
@@ -235,8 +300,7 @@ void PhysicsLoop::run() {
     run_steps();
   } catch (const std::exception& e) {  // never std::terminate: the front end reads the error and goes on drawing
     std::lock_guard lock(m_mutex);
-    m_stats.error = std::string("the physics thread stopped: ") + e.what();
-    m_latest.stats = m_stats;
+    m_latest.stats.error = std::string("the physics thread stopped: ") + e.what();
     ++m_latest.version;
   }
 }
@@ -247,38 +311,19 @@ void PhysicsLoop::run_steps() {
   const Clock::time_point start = Clock::now();
   Clock::time_point next = start;
   double paused_seconds = 0.0;
-  std::unique_lock lock(m_mutex);
-  while (!m_stop) {
-    // Commands from the front end, then the script's.
-    while (!m_commands.empty()) {
-      auto command = std::move(m_commands.front());
-      m_commands.pop_front();
-      try {
-        command(m_sim);
-        m_stats.target_rate = 1.0 / m_sim.settings().dt;
-      } catch (const std::exception& e) {
-        m_stats.error = e.what();
-      }
+  std::deque<std::function<void(LiveSimulation&)>> commands;
+  const auto wait = [&](auto&& until) {  // a wait that is not the physics' time
+    const Clock::time_point t0 = Clock::now();
+    {
+      std::unique_lock lock(m_mutex);
+      until(lock);
     }
-    run_script_commands();
-    if (m_waiting_for_drawing) {  // the front end draws this state; wait for it
-      publish();
-      const Clock::time_point t0 = Clock::now();
-      m_wake.wait(lock, [this] { return m_stop || !m_waiting_for_drawing; });
-      paused_seconds += std::chrono::duration<double>(Clock::now() - t0).count();  // not the physics' time
-      clock.starts.clear();
-      next = Clock::now();
-      continue;
-    }
-    if (m_paused) {
-      publish();
-      const Clock::time_point t0 = Clock::now();
-      m_wake.wait_for(lock, std::chrono::milliseconds(5));
-      paused_seconds += std::chrono::duration<double>(Clock::now() - t0).count();
-      clock.starts.clear();
-      next = Clock::now();
-      continue;
-    }
+    paused_seconds += std::chrono::duration<double>(Clock::now() - t0).count();
+    clock.starts.clear();
+    next = Clock::now();
+  };
+  // One step (m_sim_mutex held), its wall time and the rate in the stats.
+  const auto step_once = [&] {
     // A scripted drag ramps linearly in simulated time.
     if (m_drag_t1 >= 0.0 && !m_sim.grabbed().empty()) {
       const double f =
@@ -286,46 +331,77 @@ void PhysicsLoop::run_steps() {
       m_sim.drag(m_drag_from + f * (m_drag_to - m_drag_from));
       if (f >= 1.0) m_drag_t1 = -1.0;
     }
+    PhysicsStats& st = m_work_stats;
     const Clock::time_point t0 = Clock::now();
     try {
       const solve::StepReport r = m_sim.step();
-      m_stats.iterations += r.iterations;
-      m_stats.not_converged += r.converged ? 0 : 1;
+      st.iterations += r.iterations;
+      st.not_converged += r.converged ? 0 : 1;
     } catch (const std::exception& e) {
-      m_stats.error = std::string(e.what()) + " (the simulation was reset)";
+      st.error = std::string(e.what()) + " (the simulation was reset)";
       m_sim.reset();
     }
     const Clock::time_point t1 = Clock::now();
     const double step_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
     const double period = m_sim.settings().dt;
     clock.add(step_ms, t0, t1);
-    ++m_stats.steps;
-    if (step_ms > 1e3 * period) ++m_stats.overruns;
-    m_stats.wall_time = std::chrono::duration<double>(t1 - start).count() - paused_seconds;
+    ++st.steps;
+    if (step_ms > 1e3 * period) ++st.overruns;
+    st.wall_time = std::chrono::duration<double>(t1 - start).count() - paused_seconds;
     // Steps per wall second over the last second (since the last pause while that is shorter); behind whenever
     // that is below the target (1 % for the scheduler's wake-up jitter), paced or not.
-    m_stats.achieved_rate = clock.rate(period, m_realtime);
-    m_stats.behind = m_stats.achieved_rate < 0.99 / period;
+    st.achieved_rate = clock.rate(period, m_realtime);
+    st.behind = st.achieved_rate < 0.99 / period;
     if (clock.count % 100 == 1 || clock.count < 100) {  // percentiles now and then: sorting 1 000 values costs ~20 us
       const std::vector<double> w = clock.window();
-      m_stats.step_ms_median = experiments::quantile(w, 0.5);
-      m_stats.step_ms_p99 = experiments::quantile(w, 0.99);
+      st.step_ms_median = experiments::quantile(w, 0.5);
+      st.step_ms_p99 = experiments::quantile(w, 0.99);
+    }
+  };
+  enum class Outcome { kStepped, kDrawing, kPaused };
+  for (;;) {
+    {
+      std::lock_guard lock(m_mutex);
+      if (m_stop) return;
+      commands.swap(m_commands);
+    }
+    Outcome outcome = Outcome::kStepped;
+    double period = 0.0;
+    {
+      const std::lock_guard sim(m_sim_mutex);
+      const OwnerMark mark(m_sim_owner);
+      // Commands from the front end, then the script's.
+      run_commands(commands);
+      if (run_script_commands()) {
+        outcome = Outcome::kDrawing;  // published: the front end draws this state
+      } else if (paused()) {
+        outcome = Outcome::kPaused;
+        stage();
+      } else {
+        step_once();
+        stage();
+      }
+      period = m_sim.settings().dt;
+    }
+    if (outcome == Outcome::kDrawing) {
+      wait([this](std::unique_lock<std::mutex>& lock) {
+        m_wake.wait(lock, [this] { return m_stop || !m_waiting_for_drawing; });
+      });
+      continue;
     }
     publish();
+    if (outcome == Outcome::kPaused) {
+      wait([this](std::unique_lock<std::mutex>& lock) { m_wake.wait_for(lock, std::chrono::milliseconds(5)); });
+      continue;
+    }
     if (m_realtime) {
       // One step per period of wall time. Behind by more than 50 periods: drop the backlog (the panel says we are
       // behind) rather than running flat out to catch up.
       next += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(period));
       if (Clock::now() - next > std::chrono::duration<double>(50 * period)) next = Clock::now();
-      lock.unlock();
       std::this_thread::sleep_until(next);
-      while (m_waiters.load() > 0) std::this_thread::yield();  // behind: sleep_until did not let them in
-      lock.lock();
-    } else {
-      lock.unlock();  // let the front end take the state
-      while (m_waiters.load() > 0) std::this_thread::yield();
-      lock.lock();
     }
+    while (m_waiters.load() > 0) std::this_thread::yield();  // let with() in before the next step takes the lock
   }
 }
 

@@ -3,6 +3,9 @@
 /// wall time, 1 kHz by default), apart from whoever draws it. The drawing side posts commands (grab, drag, new
 /// settings) and copies the latest consistent state; the loop measures what it achieves (steps per second of wall
 /// time, ms per step) and says when it falls behind instead of silently slowing down.
+///
+/// Thread-safe: every member may be called from any thread (and from a posted command or a with() command); no
+/// callback of the front end runs in the physics thread with a lock held.
 #include <atomic>
 #include <condition_variable>
 #include <deque>
@@ -49,9 +52,6 @@ struct Snapshot {
   PhysicsStats stats;
 };
 
-/// A drawing command of a script, handed to the front end when its time comes (is_drawing).
-using DrawingHandler = std::function<void(const ScriptCommand&)>;
-
 class PhysicsLoop {
  public:
   /// Takes over `simulation`; the thread starts with start(). realtime = false steps as fast as it can (for
@@ -67,10 +67,12 @@ class PhysicsLoop {
   void stop();  ///< joins the thread; idempotent
 
   /// Runs `command` in the physics thread before its next step. An exception it throws is reported in
-  /// PhysicsStats::error (the simulation is left as the command left it).
+  /// PhysicsStats::error (the simulation is left as the command left it). The command may call any member of the
+  /// loop (post, with, snapshot, stats, ...).
   void post(std::function<void(LiveSimulation&)> command);
-  /// Runs `command` on the simulation now, from the calling thread, while the physics thread waits (for reads that
-  /// need the whole simulation, e.g. the model for the FEM ghost).
+  /// Runs `command` on the simulation now, from the calling thread, while the physics thread waits between two
+  /// steps (for reads that need the whole simulation, e.g. the model for the FEM ghost). The command may call the
+  /// loop's other members, and with() again (it then runs at once: the simulation is already held).
   void with(const std::function<void(const LiveSimulation&)>& command);
 
   /// Copies the latest state into `out` when it is newer than out.version; returns whether it did.
@@ -80,33 +82,50 @@ class PhysicsLoop {
   void set_paused(bool paused);
   bool paused() const;
 
-  /// Replays `script` (times in simulated time): physics commands run in the thread, drawing commands go to
-  /// `drawing`, called from the physics thread; the physics then waits until the front end calls
-  /// drawing_done() (so a screenshot shows the state at its time). Call before start().
-  void set_script(std::vector<ScriptCommand> script, DrawingHandler drawing);
+  /// Replays `script` (times in simulated time): physics commands run in the thread; at a drawing command
+  /// (is_drawing) the physics publishes the state of that time and, when `front_end_draws`, waits until the front
+  /// end has taken the command with drawing_commands() and called drawing_done() (so a screenshot shows the state
+  /// at its time); otherwise drawing commands are skipped. Call before start().
+  /// @throws InvalidArgument when the thread is running
+  void set_script(std::vector<ScriptCommand> script, bool front_end_draws = true);
+  /// The drawing commands whose time has come (in script order; empty when none), and in `out` the state published
+  /// at their time (the same as snapshot() gives, taken under the same lock, so never an older one).
+  std::vector<ScriptCommand> drawing_commands(Snapshot& out);
+  /// The front end has carried out the commands drawing_commands() gave: the physics goes on.
   void drawing_done();
   bool script_finished() const;  ///< every command has been carried out
 
  private:
   void run();        // the thread: run_steps, with any exception reported in PhysicsStats::error
   void run_steps();  // the loop
-  void publish();
-  void run_script_commands();
+  void stage();      // copies the simulation's state into m_staging (physics thread, m_sim_mutex held)
+  void publish();    // m_staging becomes the latest snapshot (takes m_mutex)
+  void run_commands(std::deque<std::function<void(LiveSimulation&)>>& commands);
+  bool run_script_commands();                            // true when a drawing command waits for the front end
+  std::unique_lock<std::mutex> lock_simulation() const;  // m_sim_mutex, let in by the physics thread
 
-  LiveSimulation m_sim;
+  // Two locks, always taken in this order when both are held: m_sim_mutex (the simulation: held by the physics
+  // thread while it steps and by with()), then m_mutex (what the threads exchange: held only to copy or swap).
+  LiveSimulation m_sim;       // guarded by m_sim_mutex
+  PhysicsStats m_work_stats;  // the physics thread's running stats (m_sim_mutex)
+  Snapshot m_staging;         // the next snapshot, filled under m_sim_mutex
   bool m_realtime;
   int m_threads;
   std::thread m_thread;
-  mutable std::atomic<int> m_waiters{0};  // other threads waiting for m_mutex: the physics lets them in
-  mutable std::mutex m_mutex;             // guards everything below
+  mutable std::mutex m_sim_mutex;
+  mutable std::atomic<int> m_waiters{0};               // threads waiting for m_sim_mutex: the physics lets them in
+  mutable std::atomic<std::thread::id> m_sim_owner{};  // the thread holding m_sim_mutex (for with() re-entry)
+  mutable std::mutex m_mutex;                          // guards everything below
   std::condition_variable m_wake;
   bool m_stop = false, m_paused = false, m_waiting_for_drawing = false;
   std::deque<std::function<void(LiveSimulation&)>> m_commands;
   Snapshot m_latest;
-  PhysicsStats m_stats;
+  std::vector<ScriptCommand> m_pending_drawing;  // drawing commands the front end has not taken yet
+  // The script: set before start(), then read by the physics thread only; m_script_next is read by
+  // script_finished().
   std::vector<ScriptCommand> m_script;
-  size_t m_script_next = 0;
-  DrawingHandler m_drawing;
+  std::atomic<size_t> m_script_next{0};
+  bool m_front_end_draws = true;
   // A drag being ramped by the script: from m_drag_from to m_drag_to between m_drag_t0 and m_drag_t1 (sim time).
   VecX m_drag_from, m_drag_to;
   double m_drag_t0 = 0.0, m_drag_t1 = -1.0;
