@@ -45,11 +45,17 @@ auto locked(SharedSimulation& s, F&& f) {
   return s.with(std::forward<F>(f));
 }
 
-py::array_t<double> rows_copy(const VecX& v, int dim) {
-  const py::ssize_t d = dim, n = v.size() / dim;
-  py::array_t<double> a({n, d});
-  std::copy(v.data(), v.data() + v.size(), a.mutable_data());
-  return a;
+// A property getter: a copy of the flat state vector `field` picks, as (N, dim) rows.
+auto state_rows(const VecX& (interactive::LiveSimulation::*field)() const) {
+  return [field](SharedSimulation& s) {
+    const auto [v, dim] = locked(s, [field](const interactive::LiveSimulation& sim) {
+      return std::pair((sim.*field)(), sim.model().mesh.dim());
+    });
+    const py::ssize_t d = dim, n = v.size() / dim;
+    py::array_t<double> a({n, d});
+    std::copy(v.data(), v.data() + v.size(), a.mutable_data());
+    return a;
+  };
 }
 
 }  // namespace
@@ -111,22 +117,8 @@ void define_live_simulation(py::module_& m) {
       .def_property_readonly(
           "time", [](SharedSimulation& s) { return locked(s, [](const Sim& sim) { return sim.time(); }); },
           "simulated time, s")
-      .def_property_readonly(
-          "positions",
-          [](SharedSimulation& s) {
-            const auto [x, d] =
-                locked(s, [](const Sim& sim) { return std::pair(sim.positions(), sim.model().mesh.dim()); });
-            return rows_copy(x, d);
-          },
-          "(N, dim) node positions, m (a copy)")
-      .def_property_readonly(
-          "velocities",
-          [](SharedSimulation& s) {
-            const auto [v, d] =
-                locked(s, [](const Sim& sim) { return std::pair(sim.velocities(), sim.model().mesh.dim()); });
-            return rows_copy(v, d);
-          },
-          "(N, dim) node velocities, m/s (a copy)")
+      .def_property_readonly("positions", state_rows(&Sim::positions), "(N, dim) node positions, m (a copy)")
+      .def_property_readonly("velocities", state_rows(&Sim::velocities), "(N, dim) node velocities, m/s (a copy)")
       .def_property_readonly(
           "model", [](SharedSimulation& s) { return locked(s, [](const Sim& sim) { return sim.model(); }); },
           "the model being simulated (a copy)")
