@@ -1,13 +1,15 @@
 // hooke bench [--sizes 1k,10k,100k] [--methods M,...] [--poisson NU] [--steps N] [--drag M] [--integrators R,...]
-// [-o DIR]: the dynamics benchmark table (ms/step per integrator, mesh and model with its error against a converged
-// implicit step, spring-force throughput beside the in-run bandwidth bound). Bullet's ratio needs the Google
-// Benchmark peer: build/release/bench/hooke_bench --benchmark_filter=Peer.
+// [-o DIR] [--haptics [--haptic-stiffness S] [--deformation-dt S]]: the dynamics benchmark table (ms/step per
+// integrator, mesh and model with its error against a converged implicit step, spring-force throughput beside the
+// in-run bandwidth bound). Bullet's ratio needs the Google Benchmark peer: build/release/bench/hooke_bench
+// --benchmark_filter=Peer. --haptics: the multirate haptics benchmark instead (interactive::run_haptics_benchmark).
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <hooke/core/atomic_file.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/dynamics_benchmark.hpp>
+#include <hooke/interactive/haptics_benchmark.hpp>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -22,7 +24,34 @@ struct BenchCli {
   std::vector<std::string> sizes{"1k", "10k"};
   experiments::DynamicsBenchmarkOptions options;
   std::string out_dir;
+  bool haptics = false;
+  std::string haptic_stiffness = "secant";
+  double deformation_dt = 0.0;
+  double reference_budget = 900.0;
 };
+
+// The multirate haptics benchmark on the same sizes, with the first method and the same nu and drag.
+int run_haptics(const BenchCli& o, const std::vector<int>& sizes) {
+  interactive::HapticsBenchmarkOptions h;
+  h.sizes = sizes;
+  h.method = o.options.methods.empty() ? h.method : o.options.methods.front();
+  h.poisson = o.options.poisson;
+  h.drag = o.options.drag;
+  h.stiffness = interactive::haptic_stiffness_from_name(o.haptic_stiffness);
+  h.deformation_dt = o.deformation_dt;
+  h.reference_budget = o.reference_budget;
+  const interactive::HapticsBenchmarkReport report = interactive::run_haptics_benchmark(h);
+  const std::string markdown = interactive::haptics_benchmark_markdown(h, report);
+  std::printf("hooke bench --haptics: multirate haptics (%s stiffness), the top's centre dragged\n\n%s",
+              o.haptic_stiffness.c_str(), markdown.c_str());
+  if (!o.out_dir.empty()) {
+    const std::filesystem::path dir(o.out_dir);
+    create_output_folder(dir);
+    write_file_atomically(dir / "haptics.md", [&](std::ostream& out) { out << markdown; });
+    std::printf("wrote %s\n", (dir / "haptics.md").string().c_str());
+  }
+  return 0;
+}
 
 int run_bench(const BenchCli& o) {
   experiments::DynamicsBenchmarkOptions options = o.options;
@@ -37,6 +66,7 @@ int run_bench(const BenchCli& o) {
     else
       throw InvalidArgument("--sizes takes 1k, 10k and 100k, not '" + s + "'");
   }
+  if (o.haptics) return run_haptics(o, options.sizes);
   const experiments::DynamicsBenchmarkReport report = experiments::run_dynamics_benchmark(options);
   const std::string markdown = experiments::dynamics_benchmark_markdown(report);
   std::printf("hooke bench: tet cylinders, nu = %g, gravity, bottom clamped, the top's centre dragged %g mm\n\n%s",
@@ -89,7 +119,19 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--integrators", o->options.integrators,
                   "Only these rows, e.g. quasi-newton,\"local-global (chebyshev)\" (default: all)")
       ->delimiter(',');
-  cmd->add_option("-o,--out", o->out_dir, "Also write bench.md and bench.json here");
+  cmd->add_option("-o,--out", o->out_dir, "Also write bench.md and bench.json here (haptics.md with --haptics)");
+  cmd->add_flag("--haptics", o->haptics,
+                "The multirate haptics benchmark instead: a 1 kHz haptic loop beside the deformation at its own "
+                "rate, its rate and force against the drag simulated at 1 kHz throughout");
+  cmd->add_option("--haptic-stiffness", o->haptic_stiffness,
+                  "--haptics: the local model's stiffness: secant, condensed or none")
+      ->capture_default_str();
+  cmd->add_option("--deformation-dt", o->deformation_dt,
+                  "--haptics: the deformation's step, s (0: measured, 1.25 x a step's wall time)")
+      ->capture_default_str();
+  cmd->add_option("--reference-budget", o->reference_budget,
+                  "--haptics: skip the full-rate reference when it would take longer than this, s")
+      ->capture_default_str();
   return [o] { return run_bench(*o); };
 }
 

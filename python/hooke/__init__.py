@@ -15,6 +15,7 @@ from ._hooke import (  # noqa: F401
     InvalidMaterial,
     InvalidMesh,
     IoError,
+    HapticModel,
     LiveSimulation,
     Material,
     Mesh,

@@ -96,3 +96,24 @@ def test_a_device_thread_drags_while_another_steps():
     t.join()
     assert not errors
     assert abs(sim.time - 0.3) < 1e-12
+
+
+def test_haptic_model_renders_between_steps():
+    # A device's 1 kHz loop renders model.render(offset) between two deformation steps of 10 ms; after a slow drag
+    # that has settled, the rendered force is the step's probe force, and it stiffens as the device pushes on.
+    model = cylinder_model("any-nu-tet")
+    sim = hooke.LiveSimulation(model, dt=0.01, damping_mass=60.0, haptic_stiffness="secant")
+    node = top_node(model)
+    sim.grab([node])
+    for k in range(1, 101):
+        sim.drag([1e-3 * min(1.0, k / 50), 0.0, 0.0])
+        sim.step()
+    h = sim.haptic_model()
+    assert h.grabbed and h.version == 100
+    assert np.allclose(h.render(h.offset), h.force)
+    k = np.asarray(h.stiffness)
+    assert k.shape == (3, 3) and k[0, 0] > 0.0 and np.allclose(k, k.T)
+    pushed = np.asarray(h.render([1.1e-3, 0.0, 0.0]))
+    assert pushed[0] < h.force[0]  # pushing further: the body pushes back harder (force along -x grows)
+    with pytest.raises(hooke.InvalidArgument, match="haptic stiffness"):
+        sim.apply(haptic_stiffness="springy")

@@ -114,6 +114,10 @@ void define_live_simulation(py::module_& m) {
           "probe_force",
           [](SharedSimulation& s) { return as_list(locked(s, [](const Sim& sim) { return sim.probe_force(); })); },
           "the force the body exerts on the probe after the last step, N (dim)")
+      .def(
+          "haptic_model", [](SharedSimulation& s) { return locked(s, [](Sim& sim) { return sim.haptic_model(); }); },
+          "The probe's local model after the last step (HapticModel): a haptic device's own 1 kHz loop renders "
+          "model.render(offset) between two steps (multirate haptics).")
       .def_property_readonly(
           "time", [](SharedSimulation& s) { return locked(s, [](const Sim& sim) { return sim.time(); }); },
           "simulated time, s")
@@ -129,6 +133,31 @@ void define_live_simulation(py::module_& m) {
       .def_property_readonly(
           "grabbed", [](SharedSimulation& s) { return locked(s, [](const Sim& sim) { return sim.grabbed(); }); },
           "the grabbed nodes");
+  py::class_<interactive::HapticModel>(m, "HapticModel",
+                                       "The probe's local model after a deformation step: force(u) = force - "
+                                       "stiffness (u - offset).")
+      .def_readonly("version", &interactive::HapticModel::version, "increases with every deformation step")
+      .def_readonly("time", &interactive::HapticModel::time, "simulated time at the end of the step, s")
+      .def_readonly("grabbed", &interactive::HapticModel::grabbed, "the probe holds nodes")
+      .def_property_readonly(
+          "offset", [](const interactive::HapticModel& h) { return as_list(h.offset); }, "the step's offset, m")
+      .def_property_readonly(
+          "force", [](const interactive::HapticModel& h) { return as_list(h.force); }, "the force after it, N")
+      .def_property_readonly(
+          "stiffness",
+          [](const interactive::HapticModel& h) {
+            py::array_t<double> a({h.stiffness.rows(), h.stiffness.cols()});
+            for (Eigen::Index i = 0; i < h.stiffness.rows(); ++i)
+              for (Eigen::Index j = 0; j < h.stiffness.cols(); ++j) a.mutable_at(i, j) = h.stiffness(i, j);
+            return a;
+          },
+          "the local stiffness, N/m (dim x dim)")
+      .def(
+          "render",
+          [](const interactive::HapticModel& h, const py::object& u) {
+            return as_list(h.render(vector_argument(u, "offset", h.offset.size())));
+          },
+          py::arg("offset"), "The force on the probe at `offset` (m, dim), N.");
   m.def(
       "fem_probe_equilibrium",
       [](const calibrate::CalibratedModel& model, const std::string& law, const std::vector<int>& clamped,

@@ -1,3 +1,4 @@
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/load_case.hpp>
@@ -59,6 +60,38 @@ struct LiveSimulation::Impl {
   long model_version = 0;
   solve::Probe probe;
   VecX grab_positions, offset, force;
+  MatX contact_stiffness;  // of the grabbed nodes (empty: not computed since the grab or the rebuild)
+  long steps = 0;          // since the rebuild, for HapticModel::version
+  // The secant stiffness and the probe's offset and force after the previous step (empty: none since the grab).
+  MatX secant;
+  VecX last_offset, last_force;
+
+  void forget_local_model() {
+    contact_stiffness.resize(0, 0);
+    secant.resize(0, 0);
+    last_offset.resize(0);
+    last_force.resize(0);
+  }
+
+  // Powell-symmetric-Broyden: the smallest symmetric change of K with K s = y, s the probe's move over the step and
+  // y minus the force's change; only for moves of at least 1 um along which the body pushed back (y . s > 0), then
+  // projected onto the positive semidefinite matrices (a negative stiffness would feed energy into the device).
+  void update_secant() {
+    const int d = dim();
+    if (secant.rows() != d) secant = MatX::Zero(d, d);
+    if (last_offset.size() == d) {
+      const VecX s = offset - last_offset, y = -(force - last_force);
+      const double ss = s.squaredNorm();
+      if (s.norm() >= 1e-6 && y.dot(s) > 0.0) {
+        const VecX r = y - secant * s;
+        secant += (r * s.transpose() + s * r.transpose()) / ss - (r.dot(s) / (ss * ss)) * (s * s.transpose());
+        const Eigen::SelfAdjointEigenSolver<MatX> eig(0.5 * (secant + secant.transpose()));
+        secant = eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
+      }
+    }
+    last_offset = offset;
+    last_force = force;
+  }
 
   int dim() const { return model.mesh.dim(); }
 
@@ -66,6 +99,7 @@ struct LiveSimulation::Impl {
   // where they are, keeping their target.
   void rebuild(const VecX& x, const VecX& v) {
     const int d = dim();
+    forget_local_model();
     model::Problem problem = model::make_problem(built.model);
     clamped.clear();
     if (!model.surface) {
@@ -183,7 +217,38 @@ solve::StepReport LiveSimulation::step() {
                         " s inverted an element: use a smaller dt or an implicit integrator");
   const int d = m->dim();
   m->force = r.probe_force.size() == d ? VecX(r.probe_force) : VecX::Zero(d);
+  ++m->steps;
+  if (m->settings.haptic_stiffness == HapticStiffness::kSecant && !m->probe.nodes.empty()) m->update_secant();
   return r;
+}
+
+HapticModel LiveSimulation::haptic_model() {
+  const int d = m->dim();
+  HapticModel h;
+  h.version = m->steps;
+  h.time = m->sim->time();
+  h.grabbed = !m->probe.nodes.empty();
+  h.offset = m->offset;
+  h.force = m->force;
+  if (!h.grabbed || m->settings.haptic_stiffness == HapticStiffness::kNone) {
+    h.stiffness = MatX::Zero(d, d);
+    return h;
+  }
+  if (m->settings.haptic_stiffness == HapticStiffness::kSecant) {
+    h.stiffness = m->secant.rows() == d ? m->secant : MatX::Zero(d, d);
+    return h;
+  }
+  if (m->contact_stiffness.rows() != d) {
+    // The body as the clamp holds it (the simulator's fixed DOFs also hold the grabbed nodes).
+    const VecX& rest = m->built.model->rest_positions();
+    std::vector<char> clamp(static_cast<size_t>(rest.size()), 0);
+    for (const int i : m->clamped)
+      for (int a = 0; a < d; ++a) clamp[static_cast<size_t>(d * i + a)] = 1;
+    m->contact_stiffness =
+        solve::contact_stiffness(m->sim->rest_stiffness(), clamp, rest, d, m->probe.nodes, m->settings.haptic_region);
+  }
+  h.stiffness = m->contact_stiffness;
+  return h;
 }
 
 void LiveSimulation::reset() { m->reset_state(); }
@@ -196,6 +261,7 @@ void LiveSimulation::grab(const std::vector<int>& nodes) {
       throw InvalidArgument("node " + std::to_string(i) + " is not a node of the model (it has " + std::to_string(n) +
                             ")");
   m->probe.nodes = nodes;
+  m->forget_local_model();
   m->probe.drive_position = true;
   m->offset.setZero(d);
   m->probe.offset = m->offset;
@@ -219,6 +285,7 @@ void LiveSimulation::drag(const VecX& offset) {
 
 void LiveSimulation::release() {
   m->probe = solve::Probe{};
+  m->forget_local_model();
   m->grab_positions.resize(0);
   m->offset.setZero(m->dim());
   m->force.setZero(m->dim());

@@ -7,6 +7,8 @@
 /// Not thread-safe: one thread owns it (interactive::PhysicsLoop runs it in its own thread).
 #include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/calibrate/model_factory.hpp>
+#include <hooke/interactive/haptic_model.hpp>
+#include <hooke/solve/contact_stiffness.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <memory>
 #include <optional>
@@ -29,6 +31,10 @@ struct LiveSettings {
   double damping_mass = 0.0;       ///< Rayleigh alpha, 1/s (>= 0)
   double damping_stiffness = 0.0;  ///< Rayleigh beta, s (>= 0)
   double influence_radius = 0.0;   ///< surface model: r of Eq. 4, m (0: half the bounding-box diagonal)
+  /// the haptic local model's stiffness (HapticModel::stiffness)
+  HapticStiffness haptic_stiffness = HapticStiffness::kSecant;
+  /// its condensation region (HapticStiffness::kCondensed; solve::ContactStiffnessOptions)
+  solve::ContactStiffnessOptions haptic_region;
 };
 
 /// A static equilibrium under the probe's current displacement (what the viewer's FEM ghost shows).
@@ -82,6 +88,11 @@ class LiveSimulation {
   /// The force the body exerts on the probe after the last step, N (dim; zero without a grab): minus the force
   /// that holds the grabbed nodes where the probe puts them (solve::StepReport::probe_force).
   const VecX& probe_force() const;
+  /// The probe's local model after the last step, for a haptic loop (interactive::HapticModel): the probe force,
+  /// the offset it was taken at and the local stiffness of LiveSettings::haptic_stiffness (condensed: computed at
+  /// the first call after a grab or a new model; secant: updated by every step).
+  /// @throws SolverFailure when the condensation fails (a body not held)
+  HapticModel haptic_model();
 
   double time() const;                              ///< simulated time, s
   const VecX& positions() const;                    ///< flat, m, model numbering

@@ -81,6 +81,8 @@ void apply_setting(LiveSettings& s, const std::string& key, const std::string& v
     s.damping_mass = parse_number(key, value);
   } else if (key == "damping-stiffness") {
     s.damping_stiffness = parse_number(key, value);
+  } else if (key == "haptic-stiffness") {
+    s.haptic_stiffness = haptic_stiffness_from_name(value);
   } else if (key == "gravity") {
     if (value != "on" && value != "off") throw InvalidArgument("set gravity takes on or off, not '" + value + "'");
     s.gravity = value == "on";
@@ -160,6 +162,19 @@ void PhysicsLoop::set_paused(bool paused) {
 bool PhysicsLoop::paused() const {
   std::lock_guard lock(m_mutex);
   return m_paused;
+}
+
+void PhysicsLoop::enable_haptics() { m_haptics = true; }
+
+void PhysicsLoop::set_device_offset(const VecX& offset) {
+  std::lock_guard lock(m_haptic_mutex);
+  m_device_offset = offset;
+  m_device_pending = true;
+}
+
+HapticModel PhysicsLoop::haptic_model() const {
+  std::lock_guard lock(m_haptic_mutex);
+  return m_haptic;
 }
 
 void PhysicsLoop::set_script(std::vector<ScriptCommand> script, bool front_end_draws) {
@@ -331,6 +346,19 @@ void PhysicsLoop::run_steps() {
       m_sim.drag(m_drag_from + f * (m_drag_to - m_drag_from));
       if (f >= 1.0) m_drag_t1 = -1.0;
     }
+    {  // a haptic device's offset, the newest
+      std::unique_lock lock(m_haptic_mutex);
+      if (m_device_pending) {
+        m_device_pending = false;
+        const VecX offset = m_device_offset;
+        lock.unlock();
+        try {
+          m_sim.drag(offset);
+        } catch (const std::exception& e) {
+          m_work_stats.error = std::string("device offset: ") + e.what();
+        }
+      }
+    }
     PhysicsStats& st = m_work_stats;
     const Clock::time_point t0 = Clock::now();
     try {
@@ -340,6 +368,15 @@ void PhysicsLoop::run_steps() {
     } catch (const std::exception& e) {
       st.error = std::string(e.what()) + " (the simulation was reset)";
       m_sim.reset();
+    }
+    if (m_haptics) {
+      try {
+        HapticModel model = m_sim.haptic_model();
+        std::lock_guard lock(m_haptic_mutex);
+        std::swap(m_haptic, model);
+      } catch (const std::exception& e) {
+        st.error = std::string("haptic model: ") + e.what();
+      }
     }
     const Clock::time_point t1 = Clock::now();
     const double step_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();

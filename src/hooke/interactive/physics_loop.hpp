@@ -10,6 +10,7 @@
 #include <condition_variable>
 #include <deque>
 #include <functional>
+#include <hooke/interactive/haptic_model.hpp>
 #include <hooke/interactive/live_simulation.hpp>
 #include <hooke/interactive/script.hpp>
 #include <mutex>
@@ -82,6 +83,16 @@ class PhysicsLoop {
   void set_paused(bool paused);
   bool paused() const;
 
+  /// Multirate haptics (HapticLoop): from now on the physics publishes the probe's local model after every step
+  /// (LiveSimulation::haptic_model; the first one after a grab condenses the stiffness, a longer step).
+  void enable_haptics();
+  /// The probe's offset for the next step, m (dim): a haptic device's position. Replaces one not yet taken (no
+  /// queue: only the newest matters); ignored without a grab.
+  void set_device_offset(const VecX& offset);
+  /// The local model after the last step (version 0 before the first, or without enable_haptics()). Takes only a
+  /// lock of its own, never held for longer than a copy of dim + dim^2 numbers.
+  HapticModel haptic_model() const;
+
   /// Replays `script` (times in simulated time): physics commands run in the thread; at a drawing command
   /// (is_drawing) the physics publishes the state of that time and, when `front_end_draws`, waits until the front
   /// end has taken the command with drawing_commands() and called drawing_done() (so a screenshot shows the state
@@ -126,13 +137,20 @@ class PhysicsLoop {
   std::vector<ScriptCommand> m_script;
   std::atomic<size_t> m_script_next{0};
   bool m_front_end_draws = true;
+  // Multirate haptics: the device's offset for the next step and the local model after the last, under a lock of
+  // their own (the haptic thread must not wait for a snapshot's copy).
+  std::atomic<bool> m_haptics{false};
+  mutable std::mutex m_haptic_mutex;
+  VecX m_device_offset;
+  bool m_device_pending = false;
+  HapticModel m_haptic;
   // A drag being ramped by the script: from m_drag_from to m_drag_to between m_drag_t0 and m_drag_t1 (sim time).
   VecX m_drag_from, m_drag_to;
   double m_drag_t0 = 0.0, m_drag_t1 = -1.0;
 };
 
 /// Carries out one `set` script command on settings (young, poisson, density, method, integrator, dt, damping-mass,
-/// damping-stiffness, gravity).
+/// damping-stiffness, haptic-stiffness, gravity).
 /// @throws InvalidArgument for a value that does not parse or is out of range
 void apply_setting(LiveSettings& settings, const std::string& key, const std::string& value);
 

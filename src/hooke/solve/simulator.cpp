@@ -148,5 +148,6 @@ VecX Simulator::momentum() const {
   return p;
 }
 double Simulator::stable_time_step() const { return m->s.stable_dt(); }
+const SparseMatrix& Simulator::rest_stiffness() { return m->s.rest_stiffness(); }
 
 }  // namespace hooke::solve

@@ -122,6 +122,9 @@ class Simulator {
   /// M^-1 K0 on the free DOFs (power iteration), zeta = (alpha / omega_max + beta omega_max) / 2 the Rayleigh
   /// damping ratio there (2 / omega_max undamped).
   double stable_time_step() const;
+  /// The Hessian of the model's energy at its rest positions, N/m (dof_count square, both triangles, no fixed DOFs
+  /// applied): assembled at the first call and kept (the integrators and the damping share it).
+  const SparseMatrix& rest_stiffness();
 
  private:
   struct Impl;

@@ -1,0 +1,68 @@
+#include <algorithm>
+#include <cmath>
+#include <hooke/core/error.hpp>
+#include <hooke/interactive/multirate.hpp>
+
+namespace hooke::interactive {
+
+VecX DeviceDrag::at(double t) const {
+  const double x = std::clamp(t / ramp, 0.0, 1.0);
+  return distance * (3.0 * x * x - 2.0 * x * x * x) * direction;
+}
+
+ForceTrace full_rate_force(LiveSimulation& sim, const DeviceDrag& device, double duration) {
+  const double dt = sim.settings().dt;
+  const auto steps = static_cast<Eigen::Index>(std::llround(duration / dt));
+  ForceTrace out;
+  out.force.resize(steps, sim.model().mesh.dim());
+  for (Eigen::Index k = 0; k < steps; ++k) {
+    sim.drag(device.at(sim.time()));
+    sim.step();
+    out.time.push_back(sim.time());
+    out.force.row(k) = sim.probe_force().transpose();
+  }
+  return out;
+}
+
+ForceTrace multirate_force(LiveSimulation& sim, const DeviceDrag& device, double duration, double haptic_dt) {
+  const double dt = sim.settings().dt;
+  const auto ratio = std::llround(dt / haptic_dt);
+  if (!(haptic_dt > 0.0) || ratio < 1 || std::abs(static_cast<double>(ratio) * haptic_dt - dt) > 1e-9 * dt)
+    throw InvalidArgument("multirate: the deformation step " + std::to_string(dt) +
+                          " s is not a whole multiple of the haptic step " + std::to_string(haptic_dt) + " s");
+  const auto ticks = static_cast<Eigen::Index>(std::llround(duration / haptic_dt));
+  ForceTrace out;
+  out.force.resize(ticks, sim.model().mesh.dim());
+  HapticModel model;  // in use: the last finished step's (none before the first has finished)
+  sim.drag(device.at(0.0));
+  sim.step();  // step 0: runs during [0, dt]
+  for (Eigen::Index j = 1; j <= ticks; ++j) {
+    const double t = static_cast<double>(j) * haptic_dt;
+    if (j % ratio == 0) {  // the step started at t - dt has finished: its model takes over, the next step starts
+      model = sim.haptic_model();
+      sim.drag(device.at(t));
+      sim.step();  // runs during [t, t + dt] while the ticks render `model`
+    }
+    out.time.push_back(t);
+    out.force.row(j - 1) = model.render(device.at(t)).transpose();
+  }
+  return out;
+}
+
+double relative_force_error(const ForceTrace& a, const ForceTrace& b) {
+  double scale = 0.0, worst = 0.0;
+  for (Eigen::Index i = 0; i < b.force.rows(); ++i) scale = std::max(scale, b.force.row(i).norm());
+  size_t shared = 0, ia = 0;
+  for (size_t ib = 0; ib < b.time.size(); ++ib) {
+    while (ia < a.time.size() && a.time[ia] < b.time[ib] - 1e-9) ++ia;
+    if (ia == a.time.size()) break;
+    if (std::abs(a.time[ia] - b.time[ib]) > 1e-9) continue;
+    worst = std::max(worst,
+                     (a.force.row(static_cast<Eigen::Index>(ia)) - b.force.row(static_cast<Eigen::Index>(ib))).norm());
+    ++shared;
+  }
+  if (shared == 0) throw InvalidArgument("relative_force_error: the traces share no time");
+  return scale > 0.0 ? worst / scale : worst;
+}
+
+}  // namespace hooke::interactive

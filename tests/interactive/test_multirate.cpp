@@ -1,0 +1,95 @@
+// Multirate haptics: the force a 1 kHz haptic loop renders from the local model (secant, condensed or no stiffness)
+// of a body deformed at 100 Hz or 33 Hz against the same drag simulated at 1 kHz throughout (the schedule in simulated
+// time, deterministic), and the two real threads (HapticLoop beside PhysicsLoop) holding a dragged probe against the
+// static equilibrium.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <hooke/core/error.hpp>
+#include <hooke/interactive/haptic_loop.hpp>
+#include <hooke/interactive/multirate.hpp>
+#include <iostream>
+#include <thread>
+
+#include "interactive/support.hpp"
+
+namespace hooke::interactive {
+namespace {
+
+LiveSimulation grabbed(const mesh::Mesh& m, double dt, HapticStiffness k = HapticStiffness::kSecant) {
+  LiveSettings s = settings("any-nu-tet", 0.45);
+  s.damping_mass = 20.0;
+  s.dt = dt;
+  s.haptic_stiffness = k;
+  LiveSimulation sim(m, s);
+  sim.grab({top_node(m)});
+  return sim;
+}
+
+TEST(Multirate, ForceWithinFivePercentOfTheFullRateDrag) {
+  const mesh::Mesh m = cylinder();
+  const DeviceDrag device{Vec3(1.0, 0.0, 0.0), 2e-3, 0.5};
+  const double duration = 0.7;
+  LiveSimulation full = grabbed(m, 1e-3);
+  const ForceTrace reference = full_rate_force(full, device, duration);
+  for (const double deformation_dt : {0.01, 0.03}) {
+    double errors[3] = {0.0, 0.0, 0.0};
+    for (const HapticStiffness k : {HapticStiffness::kNone, HapticStiffness::kCondensed, HapticStiffness::kSecant}) {
+      LiveSimulation sim = grabbed(m, deformation_dt, k);
+      const ForceTrace haptic = multirate_force(sim, device, duration, 1e-3);
+      ASSERT_EQ(haptic.time.size(), reference.time.size());
+      errors[static_cast<int>(k)] = relative_force_error(haptic, reference);
+    }
+    std::cout << "[multirate] deformation every " << 1e3 * deformation_dt << " ms, haptics at 1 kHz: force off the "
+              << "full-rate run's by (relative to its largest) " << errors[2] << " with the secant stiffness, "
+              << errors[1] << " with the condensed one, " << errors[0] << " with the force held\n";
+    for (const int k : {1, 2}) {
+      EXPECT_LT(errors[k], 0.05);
+      EXPECT_LT(errors[k], 0.5 * errors[0]);  // the stiffness carries the force between the steps
+    }
+  }
+  LiveSimulation sim = grabbed(m, 0.0025);
+  EXPECT_THROW(multirate_force(sim, device, duration, 1e-3), InvalidArgument);  // not a whole multiple
+}
+
+// The real thing: the haptic thread at 1 kHz beside the physics thread at 100 Hz, a scripted device dragging the
+// probe 1 mm over 0.2 s and holding it. After it settles the rendered force is the static equilibrium's holding
+// force (within 5 %), and both loops reported what they did.
+TEST(HapticLoop, RendersTheHoldingForceBesideTheDeformation) {
+  const mesh::Mesh m = cylinder();
+  LiveSettings s = settings("any-nu-tet", 0.45);
+  s.damping_mass = 60.0;
+  s.dt = 0.01;
+  LiveSimulation sim(m, s);
+  const int node = top_node(m);
+  sim.grab({node});
+  const calibrate::CalibratedModel model = sim.model();
+  const std::vector<int> clamped = sim.clamped_nodes();
+  PhysicsLoop physics(std::move(sim), true);
+  const DeviceDrag drag{Vec3(1.0, 0.0, 0.0), 1e-3, 0.2};
+  HapticLoop haptics(
+      physics, [&](double t) { return drag.at(t); }, 1000.0, true);
+  physics.start();
+  haptics.start();
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  haptics.stop();
+  physics.stop();
+  const HapticStats h = haptics.stats();
+  const PhysicsStats p = physics.stats();
+  std::cout << "[haptics] " << h.ticks << " ticks, " << h.achieved_rate << " Hz, period median " << h.period_ms_median
+            << " ms p99 " << h.period_ms_p99 << " ms, tick p99 " << h.tick_ms_p99 << " ms; " << h.models
+            << " deformation models (" << h.model_rate << " Hz), physics " << p.achieved_rate << " Hz\n";
+  EXPECT_TRUE(p.error.empty()) << p.error;
+  EXPECT_GT(h.ticks, 100);
+  EXPECT_GT(h.models, 10);
+  const ForceTrace trace = haptics.trace();
+  ASSERT_EQ(static_cast<long>(trace.time.size()), h.ticks);
+  const VecX target = m.nodes.row(node).transpose() + Vec3(1e-3, 0.0, 0.0);
+  const ProbeEquilibrium eq = probe_equilibrium(model, clamped, {node}, target, false);
+  const VecX felt = haptics.force();
+  EXPECT_LT((felt - eq.holding_force).norm(), 0.05 * eq.holding_force.norm())
+      << "felt " << felt.transpose() << ", holding " << eq.holding_force.transpose();
+}
+
+}  // namespace
+}  // namespace hooke::interactive

@@ -1,0 +1,130 @@
+// The condensed contact stiffness (multirate haptics' local model) against an independent derivation: the holding
+// forces of the linear static equilibria (solve::linear_static, a direct solve on the free DOFs) with the held
+// nodes displaced along each axis, divided by the displacement. A region smaller than the body holds more and is
+// measured against it.
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <hooke/calibrate/model_factory.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/experiments/load_case.hpp>
+#include <hooke/mesh/generators.hpp>
+#include <hooke/model/hessian_assembly.hpp>
+#include <hooke/model/problem.hpp>
+#include <hooke/solve/contact_stiffness.hpp>
+#include <hooke/solve/static_equilibrium.hpp>
+#include <iostream>
+
+namespace hooke::solve {
+namespace {
+
+struct Body {
+  calibrate::CalibratedModel model;
+  calibrate::BuiltModel built;
+  std::vector<int> clamped;
+  std::vector<char> fixed;
+  SparseMatrix k;
+};
+
+Body body(const std::string& method, int radial, int layers) {
+  Body b;
+  const mesh::Mesh m = mesh::tet_cylinder(0.01, 0.02, radial, layers);
+  calibrate::ModelOptions o;
+  o.method = method;
+  b.model = calibrate::calibrate_model(m, {material::Law::kLinear, 14630.0, 0.45}, o);
+  b.built = calibrate::build_model(b.model);
+  b.clamped = experiments::make_load_case(m, experiments::LoadKind::kStretch, 0.0, 1.0).fixed_nodes;
+  b.fixed.assign(static_cast<size_t>(3 * m.node_count()), 0);
+  for (const int i : b.clamped)
+    for (int a = 0; a < 3; ++a) b.fixed[static_cast<size_t>(3 * i + a)] = 1;
+  model::HessianAssembly a(*b.built.model);
+  a.assemble(b.built.model->rest_positions(), false);
+  b.k = a.matrix();
+  return b;
+}
+
+// The top nodes within `radius` of the axis (the one nearest it when none is).
+std::vector<int> top_nodes(const mesh::Mesh& m, double radius) {
+  const double top = m.nodes.col(2).maxCoeff();
+  std::vector<int> out;
+  int nearest = -1;
+  for (int i = 0; i < m.node_count(); ++i) {
+    if (m.nodes(i, 2) < top - 1e-9) continue;
+    if (m.nodes.row(i).head(2).norm() <= radius) out.push_back(i);
+    if (nearest < 0 || m.nodes.row(i).head(2).norm() < m.nodes.row(nearest).head(2).norm()) nearest = i;
+  }
+  if (out.empty()) out.push_back(nearest);
+  return out;
+}
+
+// dim x dim: column a is the holding force when every held node is moved by delta along axis a, over delta.
+MatX holding_stiffness(const Body& b, const std::vector<int>& held, double delta) {
+  MatX out(3, 3);
+  for (int a = 0; a < 3; ++a) {
+    model::Problem p = model::make_problem(b.built.model);
+    model::fix_nodes(p, b.clamped);
+    model::fix_nodes(p, held);
+    p.prescribed_positions = b.built.model->rest_positions();
+    for (const int i : held) p.prescribed_positions(3 * i + a) += delta;
+    const StaticResult r = linear_static(p);
+    EXPECT_EQ(r.report.status, SolveStatus::kConverged) << r.report.message;
+    // The force that holds them there, K u at their DOFs (the linearised force: the geometric nonlinearity of a
+    // finite difference of the gradient would stand at delta / element size, 1e-3 here).
+    const VecX g = b.k * (r.positions - b.built.model->rest_positions());
+    Vec3 holding = Vec3::Zero();
+    for (const int i : held) holding += g.segment<3>(3 * i);
+    out.col(a) = holding / delta;
+  }
+  return out;
+}
+
+TEST(ContactStiffness, EqualsTheHoldingForcesOfDisplacedEquilibria) {
+  for (const char* method : {"fem", "any-nu-tet"}) {
+    const Body b = body(method, 6, 4);
+    const mesh::Mesh& m = b.model.mesh;
+    for (const double radius : {1e-9, 0.004}) {
+      const std::vector<int> held = top_nodes(m, radius);
+      ASSERT_FALSE(held.empty());
+      const MatX kc = contact_stiffness(b.k, b.fixed, b.built.model->rest_positions(), 3, held);
+      const MatX reference = holding_stiffness(b, held, 1e-6);
+      EXPECT_LT((kc - reference).norm(), 1e-8 * reference.norm()) << method << ", " << held.size() << " held nodes:\n"
+                                                                  << kc << "\nagainst\n"
+                                                                  << reference;
+      EXPECT_LT((kc - kc.transpose()).norm(), 1e-12 * kc.norm());
+      EXPECT_GT(Eigen::SelfAdjointEigenSolver<MatX>(kc).eigenvalues().minCoeff(), 0.0);
+    }
+  }
+}
+
+// A region smaller than the body holds its boundary, so it is stiffer (K_region - K_body positive semidefinite),
+// and less so the larger it is.
+TEST(ContactStiffness, ASmallerRegionIsStifferAndConvergesWithItsSize) {
+  const Body b = body("any-nu-tet", 8, 8);
+  const mesh::Mesh& m = b.model.mesh;
+  const std::vector<int> held = top_nodes(m, 1e-9);
+  const VecX& x = b.built.model->rest_positions();
+  const MatX whole = contact_stiffness(b.k, b.fixed, x, 3, held, {m.node_count()});
+  double last = std::numeric_limits<double>::infinity();
+  for (const int size : {50, 150, 400}) {
+    const MatX kc = contact_stiffness(b.k, b.fixed, x, 3, held, {size});
+    const double excess = (kc - whole).norm() / whole.norm();
+    std::cout << "[contact] " << m.node_count() << "-node body, region of " << size << " nodes: " << excess
+              << " of the whole body's K_c above it\n";
+    EXPECT_GT(Eigen::SelfAdjointEigenSolver<MatX>(kc - whole).eigenvalues().minCoeff(), -1e-9 * whole.norm());
+    EXPECT_LT(excess, last);
+    last = excess;
+  }
+}
+
+TEST(ContactStiffness, RefusesWhatItCannotCondense) {
+  const Body b = body("fem", 4, 2);
+  const VecX& x = b.built.model->rest_positions();
+  EXPECT_THROW(contact_stiffness(b.k, b.fixed, x, 3, {}), InvalidArgument);
+  EXPECT_THROW(contact_stiffness(b.k, b.fixed, x, 3, {b.model.mesh.node_count()}), InvalidArgument);
+  EXPECT_THROW(contact_stiffness(b.k, b.fixed, x, 3, {b.clamped[0]}), InvalidArgument);  // fixed
+  const std::vector<char> loose(b.fixed.size(), 0);
+  EXPECT_THROW(contact_stiffness(b.k, loose, x, 3, {top_nodes(b.model.mesh, 1e-9)}), SolverFailure);  // not held
+}
+
+}  // namespace
+}  // namespace hooke::solve
