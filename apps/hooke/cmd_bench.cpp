@@ -28,6 +28,8 @@ struct BenchCli {
   std::string haptic_stiffness = "secant";
   double deformation_dt = 0.0;
   double reference_budget = 900.0;
+  double ramp = 1.0, hold = 0.3;
+  std::string qn_hessian = "rest";
 };
 
 // The multirate haptics benchmark on the same sizes, with the first method and the same nu and drag.
@@ -40,6 +42,9 @@ int run_haptics(const BenchCli& o, const std::vector<int>& sizes) {
   h.stiffness = interactive::haptic_stiffness_from_name(o.haptic_stiffness);
   h.deformation_dt = o.deformation_dt;
   h.reference_budget = o.reference_budget;
+  h.ramp = o.ramp;
+  h.simulator.quasi_newton.initial_hessian = solve::quasi_newton_hessian_from_name(o.qn_hessian);
+  h.hold = o.hold;
   const interactive::HapticsBenchmarkReport report = interactive::run_haptics_benchmark(h);
   const std::string markdown = interactive::haptics_benchmark_markdown(h, report);
   std::printf("hooke bench --haptics: multirate haptics (%s stiffness), the top's centre dragged\n\n%s",
@@ -129,6 +134,11 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--deformation-dt", o->deformation_dt,
                   "--haptics: the deformation's step, s (0: measured, 1.25 x a step's wall time)")
       ->capture_default_str();
+  cmd->add_option("--qn-hessian", o->qn_hessian,
+                  "--haptics: the deformation's quasi-newton initial Hessian, rest or isotropic")
+      ->capture_default_str();
+  cmd->add_option("--ramp", o->ramp, "--haptics: the drag's smoothstep ramp, s")->capture_default_str();
+  cmd->add_option("--hold", o->hold, "--haptics: the time it is held after the ramp, s")->capture_default_str();
   cmd->add_option("--reference-budget", o->reference_budget,
                   "--haptics: skip the full-rate reference when it would take longer than this, s")
       ->capture_default_str();

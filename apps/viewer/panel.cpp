@@ -33,8 +33,14 @@ bool combo(const char* label, std::string& current, const std::vector<std::strin
   return changed;
 }
 
-void rates(const interactive::PhysicsStats& s, double draw_rate) {
-  ImGui::Text("physics %.0f steps/s (target %.0f), draw %.0f fps", s.achieved_rate, s.target_rate, draw_rate);
+void rates(const interactive::PhysicsStats& s, double draw_rate, const interactive::HapticStats& h) {
+  if (h.target_rate > 0.0) {  // multirate: the haptic loop and the deformation at their own rates
+    ImGui::Text("haptics %.0f Hz (target %.0f), period p99 %.2f ms, tick p99 %.3f ms%s", h.achieved_rate, h.target_rate,
+                h.period_ms_p99, h.tick_ms_p99, h.realtime_priority ? ", real-time priority" : "");
+    ImGui::Text("deformation %.1f models/s", h.model_rate);
+  }
+  ImGui::Text("%s %.0f steps/s (target %.0f), draw %.0f fps", h.target_rate > 0.0 ? "deformation" : "physics",
+              s.achieved_rate, s.target_rate, draw_rate);
   ImGui::Text("step %.3f ms median, %.3f ms p99; %ld steps, t = %.3f s", s.step_ms_median, s.step_ms_p99, s.steps,
               s.sim_time);
   if (s.behind)
@@ -70,7 +76,7 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
   ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0), ImGuiCond_FirstUseEver);
   ImGui::Begin("hooke");
   ImGui::Text("%s model, %d nodes", snap.settings.method.c_str(), node_count);
-  rates(snap.stats, state.draw_rate);
+  rates(snap.stats, state.draw_rate, state.haptic);
   ImGui::Separator();
   probe(state, snap);
   ImGui::Separator();

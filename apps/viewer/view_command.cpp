@@ -2,6 +2,7 @@
 // [--script FILE] [--screenshot FILE.png] [--frames N] [--stats FILE.json] [--record DIR]
 #include "view_command.hpp"
 
+#include <cmath>
 #include <commands.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/interactive/fields.hpp>
@@ -21,6 +22,7 @@ struct ViewCli {
   ViewerOptions run;
   bool fast = false;
   std::vector<int> size{1024, 768};
+  std::string haptic_stiffness_name = "secant";
 };
 
 int run_view(ViewCli o) {
@@ -49,6 +51,8 @@ int run_view(ViewCli o) {
   v.width = o.size[0];
   v.height = o.size[1];
   v.realtime = !o.fast;
+  v.settings.haptic_stiffness = interactive::haptic_stiffness_from_name(o.haptic_stiffness_name);
+  if (!(v.haptic_rate >= 0.0) || !std::isfinite(v.haptic_rate)) throw InvalidArgument("--haptic-rate must be >= 0 Hz");
   if (v.threads < 1) throw InvalidArgument("--threads must be >= 1");
   if (v.grab_radius < 0.0) throw InvalidArgument("--grab-radius must be >= 0 m");
   if (v.frames < 0) throw InvalidArgument("--frames must be >= 0");
@@ -85,6 +89,14 @@ std::function<int()> add_view_options(CLI::App* cmd) {
                 "The scene alone: no panel, force arrow or colour bar (e.g. for pixel tests)");
   cmd->add_option("--threads", o->run.threads, "OpenMP threads of the physics thread")->capture_default_str();
   cmd->add_flag("--fast", o->fast, "Step as fast as possible instead of one step per dt of wall time");
+  cmd->add_option("--haptic-rate", o->run.haptic_rate,
+                  "Multirate haptics: a haptic loop at this rate (Hz, e.g. 1000) renders the probe force from the "
+                  "deformation's local model, which steps at --dt; the mouse drives the haptic loop (0: off)")
+      ->capture_default_str();
+  cmd->add_option("--haptic-stiffness", o->haptic_stiffness_name,
+                  "The haptic local model's stiffness: secant (updated by every deformation step), condensed (the "
+                  "rest stiffness condensed at the grab), none (the step's force held)")
+      ->capture_default_str();
   return [o] { return run_view(*o); };
 }
 

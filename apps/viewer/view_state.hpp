@@ -2,6 +2,7 @@
 // What the viewer's window shows and the panel edits (the drawing side's state; the physics has its own).
 #include <deque>
 #include <hooke/interactive/fields.hpp>
+#include <hooke/interactive/haptic_loop.hpp>
 #include <hooke/interactive/live_simulation.hpp>
 #include <optional>
 #include <string>
@@ -20,7 +21,10 @@ struct ViewState {
   double grab_radius = 0.0;             ///< nodes within this distance of the picked point are grabbed too, m
   std::deque<std::pair<double, float>> force_history;  ///< (sim time, |F| in N) over the last 5 s
   double draw_rate = 0.0;                              ///< frames per second of wall time
-  double colour_lo = 0.0, colour_hi = 1.0;             ///< the colour bar's range, in the field's unit
+  /// the haptic loop's rates and force (multirate haptics, --haptic-rate; haptic.target_rate 0: off)
+  interactive::HapticStats haptic;
+  VecX haptic_force;                        ///< N
+  double colour_lo = 0.0, colour_hi = 1.0;  ///< the colour bar's range, in the field's unit
   bool paused = false;
 };
 

@@ -9,11 +9,13 @@
 #include <hooke/calibrate/model_file.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/interactive/fields.hpp>
+#include <hooke/interactive/haptic_loop.hpp>
 #include <hooke/interactive/latest_job.hpp>
 #include <hooke/interactive/physics_loop.hpp>
 #include <hooke/interactive/picking.hpp>
 #include <hooke/io/series.hpp>
 #include <memory>
+#include <mutex>
 #include <thread>
 
 #include "camera.hpp"
@@ -88,10 +90,19 @@ class Viewer {
     if (!o.script.empty()) m_loop.set_script(o.script);
     if (!o.record.empty()) m_series = std::make_unique<io::SeriesWriter>(o.record, o.model.mesh);
     if (m_state.field == interactive::ColorField::kError) m_state.ghost = Ghost::kLinear;
+    if (o.haptic_rate > 0.0)  // the mouse drives the haptic loop's device; the loop drives the deformation
+      m_haptics = std::make_unique<interactive::HapticLoop>(
+          m_loop,
+          [this](double) {
+            std::lock_guard lock(m_device_mutex);
+            return m_device_offset;
+          },
+          o.haptic_rate);
   }
 
   int run() {
     m_loop.start();
+    if (m_haptics) m_haptics->start();
     Clock::time_point next_frame = Clock::now(), rate_start = next_frame;
     int frames_in_second = 0;
     bool quit = false;
@@ -125,6 +136,11 @@ class Viewer {
       next_frame += std::chrono::microseconds(16667);
       if (Clock::now() > next_frame) next_frame = Clock::now();
       std::this_thread::sleep_until(next_frame);
+    }
+    if (m_haptics) {
+      m_haptics->stop();
+      m_state.haptic = m_haptics->stats();
+      m_state.haptic_force = m_haptics->force();
     }
     m_loop.stop();
     m_loop.snapshot(m_snap);
@@ -225,18 +241,23 @@ class Viewer {
         m_mouse.grab_point = x3.row(hit->nearest_node).transpose();
         m_mouse.plane_normal = m_camera.forward();
         m_loop.post([nodes](interactive::LiveSimulation& sim) { sim.grab(nodes); });
+        set_device(VecX::Zero(m_dim));
       }
     } else if (left && m_mouse.grabbing) {
       const double denom = ray.direction.dot(m_mouse.plane_normal);
       if (std::abs(denom) > 1e-9) {
         const double s = (m_mouse.grab_point - ray.origin).dot(m_mouse.plane_normal) / denom;
         const VecX offset = interactive::from_3d(ray.origin + s * ray.direction - m_mouse.grab_point, m_dim);
-        m_loop.post([offset](interactive::LiveSimulation& sim) { sim.drag(offset); });
+        if (m_haptics)
+          set_device(offset);
+        else
+          m_loop.post([offset](interactive::LiveSimulation& sim) { sim.drag(offset); });
       }
     } else if (!left && m_mouse.grabbing) {
       m_mouse.grabbing = false;
       solve_ghost(false);  // the FEM under the displacement just let go of
       m_loop.post([](interactive::LiveSimulation& sim) { sim.release(); });
+      set_device(VecX());
     }
     const double dx = x - m_mouse.last_x, dy = y - m_mouse.last_y;
     if (right && !io.WantCaptureMouse) m_camera.orbit(dx, dy);
@@ -253,6 +274,12 @@ class Viewer {
     }
     m_mouse.space_down = space;
     m_mouse.r_down = r;
+  }
+
+  // The haptic device's offset, m (empty: no mouse input, the script's drag or none).
+  void set_device(const VecX& offset) {
+    std::lock_guard lock(m_device_mutex);
+    m_device_offset = offset;
   }
 
   void toggle_pause() {
@@ -319,6 +346,10 @@ class Viewer {
 
   void draw_frame() {
     glfwGetFramebufferSize(m_window, &m_width, &m_height);
+    if (m_haptics) {
+      m_state.haptic = m_haptics->stats();
+      m_state.haptic_force = m_haptics->force();
+    }
     // The force history: the last 5 s of simulated time.
     if (m_snap.probe_force.size() > 0 &&
         (m_state.force_history.empty() || m_state.force_history.back().first < m_snap.stats.sim_time)) {
@@ -373,6 +404,18 @@ class Viewer {
         {"dt_s", m_snap.settings.dt}};
     for (int a = 0; a < m_dim; ++a) extra.emplace_back(std::string("probe_force_") + "xyz"[a], f(a));
     if (m_state.ghost_force.size() == m_dim) extra.emplace_back("fem_holding_force_n", m_state.ghost_force.norm());
+    if (m_haptics) {
+      const interactive::HapticStats& h = m_state.haptic;
+      extra.insert(extra.end(),
+                   {{"haptic_target_rate_hz", h.target_rate},
+                    {"haptic_rate_hz", h.achieved_rate},
+                    {"haptic_period_ms_median", h.period_ms_median},
+                    {"haptic_period_ms_p99", h.period_ms_p99},
+                    {"haptic_tick_ms_p99", h.tick_ms_p99},
+                    {"haptic_ticks", static_cast<double>(h.ticks)},
+                    {"deformation_models_per_s", h.model_rate},
+                    {"haptic_force_n", m_state.haptic_force.size() > 0 ? m_state.haptic_force.norm() : 0.0}});
+    }
     interactive::write_stats(m_options.stats, m_snap.stats, extra);
   }
 
@@ -394,6 +437,9 @@ class Viewer {
   long m_springs_version = -1;
   calibrate::BuiltModel m_built;  // the model's blocks, for the Eq. 4 weights
   long m_built_version = -1;
+  std::mutex m_device_mutex;  // the mouse's offset for the haptic loop
+  VecX m_device_offset;
+  std::unique_ptr<interactive::HapticLoop> m_haptics;  // last: stopped before what it reads goes
   int m_width = 1, m_height = 1, m_frames = 0;
   double m_draw_rate_total = 0.0, m_draw_seconds = 0.0;
 };

@@ -24,6 +24,9 @@ struct ViewerOptions {
   bool no_panel = false;                           ///< hide the panel (overlays stay)
   int threads = 1;                                 ///< OpenMP threads of the physics (>= 1)
   bool realtime = true;                            ///< physics at one step per dt of wall time (else as fast as it can)
+  /// multirate haptics: a haptic loop at this rate renders the probe force from the deformation's local model and
+  /// the mouse drives it (0: off, the mouse drags the physics directly), Hz
+  double haptic_rate = 0.0;
 };
 
 /// Opens the window and runs until it closes, --frames are drawn or the script quits. Returns the exit code.

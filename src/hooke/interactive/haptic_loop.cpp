@@ -77,10 +77,12 @@ void HapticLoop::run() {
     }
     const Clock::time_point t0 = Clock::now();
     const double t = std::chrono::duration<double>(t0 - start).count();
-    const VecX offset = m_device(t);
+    const VecX device = m_device(t);
     const HapticModel model = m_physics.haptic_model();
-    const VecX force = model.render(offset);
-    m_physics.set_device_offset(offset);
+    // No device input (an empty offset): the physics keeps its own probe offset (a script's drag) and the force is
+    // the model's at that offset.
+    const VecX force = model.render(device.size() > 0 ? device : model.offset);
+    if (device.size() > 0) m_physics.set_device_offset(device);
     const Clock::time_point t1 = Clock::now();
     if (model.version != last_version) {
       last_version = model.version;

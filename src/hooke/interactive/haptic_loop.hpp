@@ -28,7 +28,8 @@ struct HapticStats {
 
 class HapticLoop {
  public:
-  /// The device: its offset (m, dim) at wall time t (s since start()); a scripted drag, or a driver's position.
+  /// The device: its offset (m, dim) at wall time t (s since start()); a scripted drag, or a driver's position. An
+  /// empty vector: no input now (the physics keeps its probe's offset; the force rendered is the model's there).
   using Device = std::function<VecX(double)>;
 
   /// Attaches to `physics` (which must outlive this loop; enable_haptics() is called on it). `record` keeps every

@@ -20,6 +20,7 @@ LiveSimulation make_simulation(const mesh::Mesh& m, const HapticsBenchmarkOption
   s.material = {material::Law::kLinear, 14630.0, o.poisson};
   s.damping_mass = o.damping_mass;
   s.haptic_stiffness = o.stiffness;
+  s.simulator = o.simulator;
   s.dt = dt;
   LiveSimulation sim(m, s);
   sim.grab(experiments::benchmark_probe_nodes(m));

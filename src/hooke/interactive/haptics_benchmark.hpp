@@ -6,6 +6,7 @@
 /// deformation's rate (real threads, wall time), and the rendered force against the same drag simulated at the
 /// haptic rate throughout (the full-rate reference), both on the deterministic schedule and from the real-time run.
 #include <hooke/interactive/haptic_model.hpp>
+#include <hooke/solve/simulator.hpp>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@ struct HapticsBenchmarkOptions {
   double hold = 0.3;                  ///< s held after it
   double damping_mass = 20.0;         ///< Rayleigh alpha, 1/s
   HapticStiffness stiffness = HapticStiffness::kSecant;
+  solve::SimulatorOptions simulator;  ///< the deformation's integrator (and the reference's), default quasi-newton
   /// the deformation's step, s; 0: measured, 1.25 x the median wall time of 5 steps of 40 ms during the ramp's
   /// fastest drag, rounded up to a haptic period (a longer step may take longer: the real-time run says)
   double deformation_dt = 0.0;
