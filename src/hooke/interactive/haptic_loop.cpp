@@ -88,12 +88,15 @@ void HapticLoop::run() {
       last_version = model.version;
       ++models;
     }
-    if (ticks > 0) {
-      if (periods.size() == kWindow) periods.erase(periods.begin());
-      periods.push_back(std::chrono::duration<double, std::milli>(t0 - last_start).count());
-    }
-    if (work.size() == kWindow) work.erase(work.begin());
-    work.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    // Rings of the last kWindow values: no per-tick shifting of the window.
+    const auto put = [](std::vector<double>& ring, long index, double value) {
+      if (ring.size() < kWindow)
+        ring.push_back(value);
+      else
+        ring[static_cast<size_t>(index) % kWindow] = value;
+    };
+    if (ticks > 0) put(periods, ticks - 1, std::chrono::duration<double, std::milli>(t0 - last_start).count());
+    put(work, ticks, std::chrono::duration<double, std::milli>(t1 - t0).count());
     last_start = t0;
     ++ticks;
     {
