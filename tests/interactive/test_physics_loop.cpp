@@ -276,6 +276,11 @@ TEST(PhysicsLoop, ApplyGrabAndGhostWhileRunning) {
     if (std::optional<ProbeEquilibrium> r = ghost.take()) ghosts += r->positions.allFinite() ? 1 : 0;
     std::this_thread::yield();
   }
+  // The physics keeps stepping through all of that: wait (not a timing assertion: a loaded CI core may be slow) for
+  // it to pass 40 steps, which a deadlock or a stuck exchange would never do.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  for (loop.snapshot(snap); snap.stats.steps <= 40 && std::chrono::steady_clock::now() < deadline; loop.snapshot(snap))
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
   loop.stop();
   loop.snapshot(snap);
   EXPECT_TRUE(snap.stats.error.empty()) << snap.stats.error;
