@@ -58,6 +58,7 @@ BENCHMARK(BM_IdentifyReference)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillis
 void BM_IdentifyForces(benchmark::State& state) {
   const Reference& r = bench::cached<Reference>(static_cast<int>(state.range(0)));
   identify::IdentifyOptions options;
+  options.objective = identify::Objective::kForces;
   options.parameters = identify::Parameters::kSpringsVolume;
   options.least_squares.tolerance = 1e-2;  // residual within 0.3 % of its minimum (header)
   if (const char* t = std::getenv("HOOKE_LSQ_TOL")) options.least_squares.tolerance = std::atof(t);

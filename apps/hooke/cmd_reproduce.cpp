@@ -43,7 +43,14 @@ Action add_reproduce_command(CLI::App& app) {
   cmd->add_option("--meshes", o->mesh_dir, "Folder of the committed meshes")->capture_default_str();
   cmd->add_flag("--no-figures", o->no_figures, "Write the figure specs (JSON) but do not run matplotlib");
   cmd->add_option("--nu", o->nu_range.poisson, "nu-range: Poisson's ratios")->delimiter(',')->capture_default_str();
-  cmd->add_option("--methods", o->nu_range.methods, "nu-range: tet calibration methods")
+  cmd->add_option("--methods", o->nu_range.methods, "nu-range: calibration methods for tet meshes")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--triangle-methods", o->nu_range.triangle_methods,
+                  "nu-range: calibration methods for triangle meshes")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--planes", o->nu_range.planes, "nu-range: the 2D reductions triangle meshes run in (stress, strain)")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--study-meshes", o->nu_range.meshes, "nu-range: committed meshes")
@@ -70,9 +77,9 @@ Action add_reproduce_command(CLI::App& app) {
       experiments::write_nu_range_report(staging, report);
       for (const auto& r : report.recommendations) std::printf("pick %s\n", r.c_str());
       if (!o->no_figures) plot_figures(figure_specs(staging, report.figures));
-      outputs.commit({"nu_range.json", "nu_range.md"});
-      std::printf("wrote %s/nu_range.md, nu_range.json and %zu figures (%.0f s)\n", o->out_dir.c_str(),
-                  report.figures.size(), report.seconds);
+      outputs.commit({"nu_range.json", "method_table.inc", "nu_range.md"});
+      std::printf("wrote %s/nu_range.md, nu_range.json, method_table.inc and %zu figures (%.0f s)\n",
+                  o->out_dir.c_str(), report.figures.size(), report.seconds);
       return 0;
     }
     if (o->paper == "arnab2008") {

@@ -35,7 +35,7 @@ calibrate::SurfaceOptions surface_options(const SurfaceInput& in);
 
 /// Where a command's model comes from: a model file (--model), or a mesh calibrated by --method from E, nu.
 struct ModelSource {
-  std::string mesh_path, unit = "m", model_path, method = "lloyd-tet", law = "linear", plane = "stress";
+  std::string mesh_path, unit = "m", model_path, method = "auto", law = "linear", plane = "stress";
   double young = std::nan(""), poisson = std::nan(""), thickness = 1e-3, density = 1000.0;  ///< NaN: not given
   SurfaceInput surface;
 };

@@ -90,8 +90,10 @@ calibrate::CalibratedModel load_model(const ModelSource& in) {
   calibrate::ModelOptions mo;
   mo.method = in.method;
   mo.density = in.density;
-  if (in.method == "surface") mo.surface = surface_options(in.surface);
-  return calibrate::calibrate_model(io::read_mesh(in.mesh_path, ro), mat, mo);
+  if (in.method == "surface" || in.method == "auto") mo.surface = surface_options(in.surface);
+  calibrate::CalibratedModel model = calibrate::calibrate_model(io::read_mesh(in.mesh_path, ro), mat, mo);
+  if (!model.choice.empty()) std::fprintf(stderr, "hooke: %s\n", model.choice.c_str());  // what --method auto picked
+  return model;
 }
 
 int parse_and_run(CLI::App& app, int argc, char** argv, const char* program, const std::function<int()>& action) {

@@ -29,8 +29,8 @@ int run_view(ViewCli o) {
   // Everything is checked before a window opens: the model, the settings, the script, the colour map.
   ViewerOptions v = o.run;
   v.model = cli::load_model(o.in);
-  // A model file runs as it is ("file"); a calibration keeps its method's name, so the panel shows it.
-  v.settings.method = o.in.model_path.empty() ? v.model.method : "file";
+  // A model file runs as it is ("file"); a calibration keeps its method's name ("auto" re-picks when nu changes).
+  v.settings.method = o.in.model_path.empty() ? o.in.method : "file";
   v.settings.material = v.model.material;
   v.settings.density = v.model.density;
   if (v.model.method == "surface") v.settings.surface = cli::surface_options(o.in.surface);

@@ -62,8 +62,10 @@ class ValidityWarning(UserWarning):
     from nu = 1/4)."""
 
 
-def calibrate(mesh, material, method="lloyd-tet", density=1000.0):
-    """Calibrates the model `method` (one of hooke.methods()) on `mesh` for `material`.
+def calibrate(mesh, material, method="auto", density=1000.0):
+    """Calibrates the model `method` (one of hooke.methods()) on `mesh` for `material`. "auto" (the default) picks
+    the method of smallest measured error for the mesh's element kind and nu; the model's .method is the one picked
+    and .choice says why.
 
     mesh      hooke.Mesh, coordinates in m (a closed surface-triangle mesh for method="surface")
     material  hooke.Material (E in Pa, nu; thickness in m for 2D meshes)
@@ -106,7 +108,7 @@ def reproduce(paper, out_dir, meshes=None):
     return json.loads((out / (paper + ".json")).read_text())
 
 
-def identify(mesh, material, params="auto", objective="forces", references=None, strain=0.01, held_out=4, seed=2007,
+def identify(mesh, material, params="auto", objective="positions", references=None, strain=0.01, held_out=4, seed=2007,
              regularize=0.0, stiffness_floor=1e-3, iterations=30, compare="auto", density=1000.0, tolerance=1e-9,
              negative_volume=False):
     """Identifies a spring model from reference deformations (Lloyd et al. 2007: Eq. 2 `objective="forces"`, Eq. 1

@@ -53,14 +53,15 @@ def test_identify_refuses_bad_references():
 def test_identify_passes_tolerance_and_negative_volume_through():
     mesh = cylinder()
     material = hooke.Material(14630.0, 0.1)
+    # Eq. 2 alone: its solver's tolerance and the sign of the volume terms
     with pytest.raises(ValueError, match="tolerance"):
-        hooke.identify(mesh, material, held_out=0, tolerance=0.0)
-    loose, loose_report = hooke.identify(mesh, material, held_out=0, tolerance=1e-2)
-    tight, tight_report = hooke.identify(mesh, material, held_out=0)
+        hooke.identify(mesh, material, held_out=0, objective="forces", tolerance=0.0)
+    loose, loose_report = hooke.identify(mesh, material, held_out=0, objective="forces", tolerance=1e-2)
+    tight, tight_report = hooke.identify(mesh, material, held_out=0, objective="forces")
     assert loose_report["least_squares"]["cg_iterations"] < tight_report["least_squares"]["cg_iterations"]
     assert tight_report["tolerance"] == 1e-9 and not tight_report["negative_volume"]
     assert loose.volume_stiffness.min() >= 0.0
     # at nu = 0.1 the force fit wants negative volume terms (a spring network alone is a nu = 1/4 solid)
-    free, free_report = hooke.identify(mesh, material, held_out=0, negative_volume=True)
+    free, free_report = hooke.identify(mesh, material, held_out=0, objective="forces", negative_volume=True)
     assert free.volume_stiffness.min() < 0.0
     assert free_report["force_residual"] < tight_report["force_residual"]

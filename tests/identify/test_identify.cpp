@@ -207,6 +207,7 @@ TEST(Identify, ForcesObjectiveRecoversTheSpringsThatMadeTheData) {
   const identify::ParameterLayout layout = identify::parameter_layout(mesh, Parameters::kSpringsVolume);
   const VecX truth = random_parameters(layout, 21, 40.0, 2e-3);
   identify::IdentifyOptions options;
+  options.objective = identify::Objective::kForces;  // Eq. 2 alone
   options.parameters = Parameters::kSpringsVolume;
   const identify::Identification id =
       identify::identify(mesh, cases_of(mesh, identify::spring_model(layout, truth), 6, 0.01, 22), options);
@@ -243,6 +244,7 @@ TEST(Identify, NegativeVolumeTermsAreRecoveredOnlyWhenAllowed) {
   ASSERT_LT(truth.tail(layout.volume_count()).maxCoeff(), 0.0);
   const auto cases = cases_of(mesh, springs, 6, 1e-4, 24);
   identify::IdentifyOptions options;
+  options.objective = identify::Objective::kForces;  // Eq. 2 alone
   options.parameters = Parameters::kSpringsVolume;
   const identify::Identification bounded = identify::identify(mesh, cases, options);
   EXPECT_GT(bounded.report.force_residual, 1e-3);
@@ -290,6 +292,7 @@ TEST(Identify, RestLengthsOfASelfStressedModelAreRecovered) {
   truth.tail(ns) = t;
   const calibrate::SpringModel made = identify::spring_model(layout, truth);
   identify::IdentifyOptions options;
+  options.objective = identify::Objective::kForces;  // Eq. 2 alone
   options.parameters = Parameters::kSpringsVolumeRestLength;
   const identify::Identification id = identify::identify(mesh, cases_of(mesh, made, 6, 0.01, 32), options);
   EXPECT_TRUE(id.report.least_squares.converged)
@@ -333,6 +336,7 @@ TEST(Identify, RejectsCasesOfTheWrongSizeOrAllHeldOut) {
   EXPECT_THROW(identify::identify(mesh, {held}), InvalidArgument);
   held.held_out = false;
   identify::IdentifyOptions options;
+  options.objective = identify::Objective::kForces;  // Eq. 2 alone
   for (double tolerance : {0.0, 1.0, std::nan("")}) {
     options.least_squares.tolerance = tolerance;
     EXPECT_THROW(identify::identify(mesh, {held}, options), InvalidArgument) << tolerance;
@@ -348,6 +352,7 @@ TEST(Identify, ScaleRecoversTheFactorTakenOffTheModelThatMadeTheData) {
   std::vector<identify::ReferenceCase> cases = cases_of(mesh, truth, 4, 0.05, 32);
   cases.back().held_out = true;
   identify::IdentifyOptions options;
+  options.objective = identify::Objective::kForces;  // Eq. 2 alone
   options.parameters = Parameters::kScale;
   options.start_model = identify::scaled(truth, 1.0 / 1.3);
   const identify::Identification id = identify::identify(mesh, cases, options);

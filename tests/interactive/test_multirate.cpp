@@ -71,7 +71,11 @@ TEST(HapticLoop, RendersTheHoldingForceBesideTheDeformation) {
       physics, [&](double t) { return drag.at(t); }, 1000.0, true);
   physics.start();
   haptics.start();
+  // 1.5 s of simulated time (150 steps; a loaded or sanitized build may need more wall time for them).
+  const auto start = std::chrono::steady_clock::now();
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  while (physics.stats().steps < 150 && std::chrono::steady_clock::now() - start < std::chrono::seconds(120))
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   haptics.stop();
   physics.stop();
   const HapticStats h = haptics.stats();

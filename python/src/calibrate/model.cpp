@@ -33,6 +33,8 @@ void define_model(py::module_& m) {
                               "terms, lumped masses (kg), the material, the method and its validity warnings.")
       .def_readonly("method", &CalibratedModel::method, "stable method name")
       .def_readonly("equation", &CalibratedModel::equation, "where the constants come from (paper, equation)")
+      .def_readonly("choice", &CalibratedModel::choice,
+                    "why method=\"auto\" chose this method (the measured errors compared); empty otherwise")
       .def_readonly("mesh", &CalibratedModel::mesh, py::return_value_policy::reference_internal, "the rest mesh (m)")
       .def_readonly("material", &CalibratedModel::material, "the material it was calibrated for")
       .def_readonly("density", &CalibratedModel::density, "kg/m^3, what the masses were made from")
@@ -101,7 +103,7 @@ void define_model(py::module_& m) {
         py::gil_scoped_release release;
         return calibrate::calibrate_model(mesh, material, o);
       },
-      py::arg("mesh"), py::arg("material"), py::arg("method") = "lloyd-tet", py::arg("density") = 1000.0);
+      py::arg("mesh"), py::arg("material"), py::arg("method") = "auto", py::arg("density") = 1000.0);
   m.def(
       "read_model",
       [](const std::filesystem::path& path) {

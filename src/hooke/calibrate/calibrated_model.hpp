@@ -42,6 +42,7 @@ struct CertificateCase {
 struct CalibratedModel {
   std::string method;                   ///< stable name: a calibration method, "surface", "fem", or what a file says
   std::string equation;                 ///< where its constants come from ("Lloyd et al. 2007, Eq. 12-13")
+  std::string choice;                   ///< why `method` was chosen, for "auto" (calibrate::choose_method); else empty
   mesh::Mesh mesh;                      ///< rest nodes (m) and the elements the model stands for
   material::Material material;          ///< E (Pa), nu, thickness (m, 2D); the law is used by "fem" only
   double density = 1000.0;              ///< kg/m^3, what the masses were made from

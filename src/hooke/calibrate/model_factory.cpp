@@ -1,8 +1,10 @@
 #include <algorithm>
 #include <cmath>
 #include <hooke/calibrate/method.hpp>
+#include <hooke/calibrate/method_choice.hpp>
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/core/log.hpp>
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/model/mass.hpp>
 #include <hooke/model/orientation_guard.hpp>
@@ -44,7 +46,8 @@ CalibratedModel surface_model(const mesh::Mesh& mesh, const material::Material& 
 }  // namespace
 
 std::vector<std::string> model_method_names() {
-  std::vector<std::string> out(std::begin(kCalibrationMethods), std::end(kCalibrationMethods));
+  std::vector<std::string> out{"auto"};
+  out.insert(out.end(), std::begin(kCalibrationMethods), std::end(kCalibrationMethods));
   out.emplace_back("surface");
   out.emplace_back("fem");
   return out;
@@ -60,20 +63,21 @@ std::string method_equation(std::string_view method) {
   if (method == "stiffness-fit")
     return "Lloyd et al. 2007, Sec. 3.3 numerically: per element min ||K_FEM - K_MSM||_F, k >= 0 (tets: K_FEM at "
            "E, nu = 1/4, what springs can carry), then all k times one c fitted by Eq. 1 to the linear FEM under "
-           "self-weight (docs/methods/any_nu.md)";
+           "self-weight";
   if (method == "stiffness-fit-volume")
-    return "docs/methods/any_nu.md: per tet min ||K_FEM(5 mu/2, 1/4) - K_MSM||_F, k >= 0, and a volume term "
+    return "hooke's any-nu fit: per tet min ||K_FEM(5 mu/2, 1/4) - K_MSM||_F, k >= 0, and a volume term "
            "k_V = (lambda - mu) V0 for nu >= 1/4 (App. C.2); the springs times one c fitted by Eq. 1 to the "
            "linear FEM under self-weight";
   if (method == "any-nu-tet")
-    return "docs/methods/any_nu.md: Lloyd et al. 2007 Eq. 12-13 springs at E_s = 5 mu / 2 and a volume term "
+    return "hooke's any-nu split: Lloyd et al. 2007 Eq. 12-13 springs at E_s = 5 mu / 2 and a volume term "
            "k_V = (lambda - mu) V0 per tet (App. C.2) for nu >= 1/4; below, Eq. 12-13 at E (lloyd-tet)";
   if (method == "any-nu-triangle")
-    return "docs/methods/any_nu.md: Lloyd et al. 2007 Eq. 9 springs at E_s = 8 mu / 3 and an area term "
+    return "hooke's any-nu split: Lloyd et al. 2007 Eq. 9 springs at E_s = 8 mu / 3 and an area term "
            "k_A = (lambda* - mu) t A0 per triangle for lambda* >= mu (nu >= 1/3 in plane stress); below, Eq. 9 at E";
   if (method == "surface")
     return "Arnab & Raja: anchors (Eq. 2), volume penalty (Eq. 3, 4), membrane springs of Lloyd et al. Eq. 9";
   if (method == "fem") return "finite elements (CST, Q4, tet4) of the material's law";
+  if (method == "auto") return "the method of smallest measured error for the mesh's element kind and nu";
   method_from_name(method);  // throws, listing the names
   return {};
 }
@@ -89,6 +93,15 @@ CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material
   material::validate(material);
   if (!(options.density > 0.0) || !std::isfinite(options.density))
     throw InvalidArgument("the density must be a positive number of kg/m^3");
+  if (options.method == "auto") {
+    const MethodChoice choice = choose_method(mesh.kind, material);
+    log(LogLevel::kInfo, choice.reason);
+    ModelOptions chosen = options;
+    chosen.method = choice.method;
+    CalibratedModel out = calibrate_model(mesh, material, chosen);
+    out.choice = choice.reason;
+    return out;
+  }
   CalibratedModel out;
   if (options.method == "surface") {
     out = surface_model(mesh, material, options);

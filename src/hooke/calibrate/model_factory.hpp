@@ -12,14 +12,14 @@
 namespace hooke::calibrate {
 
 struct ModelOptions {
-  /// A calibration method (method_from_name), "surface" (Arnab & Raja) or "fem" (the FEM model of
-  /// `material.law`), default "lloyd-tet".
-  std::string method = "lloyd-tet";
+  /// "auto" (the default: calibrate::choose_method picks by element kind and nu, from measured errors), a
+  /// calibration method (method_from_name), "surface" (Arnab & Raja) or "fem" (the FEM model of `material.law`).
+  std::string method = "auto";
   double density = 1000.0;  ///< kg/m^3 (> 0), for the lumped masses (and the surface model's object mass)
   SurfaceOptions surface;   ///< "surface" only; its density is replaced by `density`
 };
 
-/// Every name ModelOptions::method accepts: the calibration methods, then "surface" and "fem".
+/// Every name ModelOptions::method accepts: "auto", the calibration methods, then "surface" and "fem".
 std::vector<std::string> model_method_names();
 
 /// Where the constants of `method` come from, one line ("Lloyd et al. 2007, Eq. 12 with l-hat of Eq. 13").
@@ -27,7 +27,8 @@ std::vector<std::string> model_method_names();
 std::string method_equation(std::string_view method);
 
 /// Calibrates the model named by options.method on `mesh` for `material` (linear E, nu; t for 2D; the law
-/// only matters for "fem"): springs, volume and surface terms, lumped masses, the validity warnings.
+/// only matters for "fem"): springs, volume and surface terms, lumped masses, the validity warnings. For "auto" the
+/// model's method is the one chosen and its `choice` says why (also logged at LogLevel::kInfo).
 /// @param mesh  validated mesh, m; a closed surface-triangle mesh for "surface"
 /// @throws InvalidArgument for an unknown method or one that does not apply to the mesh, InvalidMaterial,
 ///   InvalidMesh (the surface model's checks)

@@ -286,7 +286,9 @@ std::string model_json(const CalibratedModel& m) {
   const material::Material& mat = m.material;
   out << "{\n  \"format\": \"hooke-model\",\n  \"schema_version\": " << kModelSchemaVersion
       << ",\n  \"hooke_version\": " << str(std::string(kVersion)) << ",\n  \"method\": " << str(m.method)
-      << ",\n  \"equation\": " << str(m.equation) << ",\n  \"source_mesh\": " << str(m.mesh.source)
+      << ",\n  \"equation\": " << str(m.equation);
+  if (!m.choice.empty()) out << ",\n  \"method_choice\": " << str(m.choice);
+  out << ",\n  \"source_mesh\": " << str(m.mesh.source)
       << ",\n  \"units\": {\"length\": \"m\", \"stiffness\": \"N/m\", \"mass\": \"kg\", \"volume_stiffness\": \"J\"}"
       << ",\n  \"material\": {\"law\": " << str(std::string(material::law_name(mat.law)))
       << ", \"youngs_modulus\": " << num(mat.youngs_modulus) << ", \"poisson_ratio\": " << num(mat.poisson_ratio)
@@ -392,10 +394,10 @@ CalibratedModel model_from_json(const json& j, const std::string& source) {
   if (!version.is_number_integer() || version.get<std::int64_t>() != kModelSchemaVersion)
     r.fail("schema_version",
            "is " + version.dump() + "; this hooke reads schema version " + std::to_string(kModelSchemaVersion));
-  r.only_keys(
-      j, "",
-      {"format", "schema_version", "hooke_version", "method", "equation", "source_mesh", "units", "material",
-       "element_kind", "nodes", "elements", "masses", "springs", "volume_terms", "surface", "warnings", "certificate"});
+  r.only_keys(j, "",
+              {"format", "schema_version", "hooke_version", "method", "equation", "method_choice", "source_mesh",
+               "units", "material", "element_kind", "nodes", "elements", "masses", "springs", "volume_terms", "surface",
+               "warnings", "certificate"});
   if (j.contains("units")) {
     const json& u = j["units"];
     r.only_keys(u, "units", {"length", "stiffness", "mass", "volume_stiffness"});
@@ -408,6 +410,7 @@ CalibratedModel model_from_json(const json& j, const std::string& source) {
   CalibratedModel m;
   m.method = r.string(r.key(j, "", "method"), "method");
   m.equation = j.contains("equation") ? r.string(j["equation"], "equation") : std::string();
+  m.choice = j.contains("method_choice") ? r.string(j["method_choice"], "method_choice") : std::string();
   m.material = read_material(r, r.key(j, "", "material"), m.density);
   const mesh::ElementKind kind = read_kind(r, j);
   RowMatX nodes = read_points(r, j, "nodes", mesh::dimension(kind));

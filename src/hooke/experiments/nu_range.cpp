@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <hooke/core/atomic_file.hpp>
 #include <hooke/core/error.hpp>
@@ -34,10 +35,28 @@ std::vector<Regime> regimes(const NuRangeOptions& o) {
   return out;
 }
 
+// One mesh in one 2D reduction (tets: none) and the methods run on it.
+struct Unit {
+  std::string mesh_name;
+  const mesh::Mesh* mesh = nullptr;
+  material::Plane plane = material::Plane::kStress;
+  std::string plane_name;  // empty for tets
+  std::string table;       // calibrate::method_table_name
+  const std::vector<std::string>* methods = nullptr;
+  std::string label() const { return plane_name.empty() ? mesh_name : mesh_name + " (plane " + plane_name + ")"; }
+};
+
+material::Material material_at(const Unit& u, double nu) {
+  material::Material m{material::Law::kLinear, 14630.0, nu};
+  m.plane = u.plane;
+  return m;
+}
+
 // Every method on one mesh, load, regime and nu: one FEM reference, one spring solve per method.
-std::vector<NuRangeRow> run_rows(const mesh::Mesh& mesh, const std::string& mesh_name, const std::string& load,
-                                 const Regime& regime, double nu, const std::vector<std::string>& methods) {
-  const std::vector<material::Material> materials{material::Material{material::Law::kLinear, 14630.0, nu}};
+std::vector<NuRangeRow> run_rows(const Unit& u, const std::string& load, const Regime& regime, double nu) {
+  const std::vector<material::Material> materials{material_at(u, nu)};
+  const mesh::Mesh& mesh = *u.mesh;
+  const std::vector<std::string>& methods = *u.methods;
   CompareOptions o;
   o.load = load_kind_from_name(load);
   o.strain = regime.strain;
@@ -47,7 +66,7 @@ std::vector<NuRangeRow> run_rows(const mesh::Mesh& mesh, const std::string& mesh
     models.push_back(calibrate::calibrate(mesh, materials, calibrate::method_from_name(method)));
   std::vector<NuRangeRow> rows;
   for (const auto& method : methods)
-    rows.push_back({mesh_name, load, regime.reference, regime.strain, nu, method, -1.0, ""});
+    rows.push_back({u.table, u.label(), load, regime.reference, regime.strain, nu, method, -1.0, ""});
   try {
     const std::vector<Comparison> c = compare_models(mesh, materials, models, o);
     for (std::size_t m = 0; m < methods.size(); ++m) {
@@ -63,38 +82,101 @@ std::vector<NuRangeRow> run_rows(const mesh::Mesh& mesh, const std::string& mesh
   return rows;
 }
 
-// Per nu: the method whose worst error over the cases is smallest. A case where the FEM failed has no reference, and
-// a case where every method's springs failed (the load passes a limit point of every spring model) says nothing
-// about the choice: both are left out and counted. A spring solve that failed where another method converged
-// counts as an infinite error.
+// The cases of one table at one nu (mesh, load, regime -> rows), those where no method converged left out (the FEM
+// failed, or the load passes a limit point of every spring model: they say nothing about the choice) and counted.
+struct Cases {
+  std::map<std::string, std::vector<const NuRangeRow*>> rows;
+  int left_out = 0;
+};
+
+Cases cases_of(const NuRangeReport& r, const std::string& table, double nu, bool small_linear_only) {
+  Cases out;
+  std::map<std::string, std::vector<const NuRangeRow*>> all;
+  for (const auto& row : r.rows)
+    if (row.table == table && row.poisson == nu &&
+        (!small_linear_only || (row.reference == "linear" && row.strain == r.options.small_strain)))
+      all[row.mesh + "|" + row.load + "|" + row.reference + "|" + std::to_string(row.strain)].push_back(&row);
+  for (auto& [key, rows] : all) {
+    if (std::none_of(rows.begin(), rows.end(), [](const NuRangeRow* x) { return x->relative_l2 >= 0.0; }))
+      ++out.left_out;
+    else
+      out.rows.emplace(key, std::move(rows));
+  }
+  return out;
+}
+
+// Per method, the worst error over the cases; a spring solve that failed where another method converged counts as an
+// infinite error.
+std::map<std::string, double> worst_of(const Cases& c) {
+  std::map<std::string, double> worst;
+  for (const auto& [key, rows] : c.rows)
+    for (const NuRangeRow* x : rows) {
+      double& w = worst[x->method];
+      w = std::max(w, x->relative_l2 < 0.0 ? std::numeric_limits<double>::infinity() : x->relative_l2);
+    }
+  return worst;
+}
+
+std::vector<std::string> tables_of(const NuRangeReport& r) {
+  std::vector<std::string> out;
+  for (const auto& row : r.rows)
+    if (std::find(out.begin(), out.end(), row.table) == out.end()) out.push_back(row.table);
+  return out;
+}
+
+// Per table and nu: the method whose worst error over the cases (every regime) is smallest.
 std::vector<std::string> recommend(const NuRangeReport& r) {
   std::vector<std::string> out;
-  for (double nu : r.options.poisson) {
-    std::map<std::string, std::vector<const NuRangeRow*>> cases;  // mesh, load, regime -> rows
-    for (const auto& row : r.rows)
-      if (row.poisson == nu)
-        cases[row.mesh + "|" + row.load + "|" + row.reference + "|" + std::to_string(row.strain)].push_back(&row);
-    std::map<std::string, double> worst;
-    int left_out = 0;
-    for (const auto& [key, rows] : cases) {
-      if (std::none_of(rows.begin(), rows.end(), [](const NuRangeRow* x) { return x->relative_l2 >= 0.0; })) {
-        ++left_out;
-        continue;
-      }
-      for (const NuRangeRow* x : rows) {
-        double& w = worst[x->method];
-        w = std::max(w, x->relative_l2 < 0.0 ? std::numeric_limits<double>::infinity() : x->relative_l2);
+  for (const std::string& table : tables_of(r))
+    for (double nu : r.options.poisson) {
+      const Cases c = cases_of(r, table, nu, false);
+      const std::map<std::string, double> worst = worst_of(c);
+      const auto best = std::min_element(worst.begin(), worst.end(),
+                                         [](const auto& a, const auto& b) { return a.second < b.second; });
+      if (best == worst.end()) continue;
+      char line[256];
+      std::snprintf(
+          line, sizeof line, "%s, nu = %g: %s, worst relative L2 %.3f over %zu cases%s", table.c_str(), nu,
+          best->first.c_str(), best->second, c.rows.size(),
+          c.left_out ? (" (" + std::to_string(c.left_out) + " where no solve converged left out)").c_str() : "");
+      out.push_back(line);
+    }
+  return out;
+}
+
+// The table `--method auto` picks from: the small-strain, linear-FEM regime only (the regime the calibration equates
+// stiffness in, and the one `hooke calibrate --certify` measures).
+std::vector<calibrate::MeasuredError> method_table(const NuRangeReport& r) {
+  std::vector<calibrate::MeasuredError> out;
+  for (const std::string& table : tables_of(r))
+    for (double nu : r.options.poisson) {
+      const Cases c = cases_of(r, table, nu, true);
+      const std::map<std::string, double> worst = worst_of(c);
+      for (const auto& row : r.rows) {  // the study's method order
+        if (row.table != table || row.poisson != nu) continue;
+        const auto w = worst.find(row.method);
+        if (w == worst.end() || !std::isfinite(w->second)) continue;
+        const bool seen = std::any_of(out.begin(), out.end(), [&](const calibrate::MeasuredError& e) {
+          return e.table == table && e.poisson == nu && e.method == row.method;
+        });
+        if (!seen) out.push_back({table, nu, row.method, w->second, static_cast<int>(c.rows.size())});
       }
     }
-    const auto best =
-        std::min_element(worst.begin(), worst.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
-    if (best == worst.end()) continue;
-    char line[256];
-    std::snprintf(line, sizeof line, "nu = %g: %s, worst relative L2 %.3f over %zu cases%s", nu, best->first.c_str(),
-                  best->second, cases.size() - static_cast<std::size_t>(left_out),
-                  left_out ? (" (" + std::to_string(left_out) + " where no solve converged left out)").c_str() : "");
-    out.push_back(line);
-  }
+  return out;
+}
+
+// The meshes (with their plane) in the order they ran, and the methods each ran.
+std::vector<std::string> labels_of(const NuRangeReport& r) {
+  std::vector<std::string> out;
+  for (const auto& row : r.rows)
+    if (std::find(out.begin(), out.end(), row.mesh) == out.end()) out.push_back(row.mesh);
+  return out;
+}
+
+std::vector<std::string> methods_of(const NuRangeReport& r, const std::string& label) {
+  std::vector<std::string> out;
+  for (const auto& row : r.rows)
+    if (row.mesh == label && std::find(out.begin(), out.end(), row.method) == out.end()) out.push_back(row.method);
   return out;
 }
 
@@ -105,14 +187,15 @@ std::vector<Figure> figures(const NuRangeReport& r) {
     Figure f;
     f.name = "nu_range_" + regime.reference + "_" + std::to_string(static_cast<int>(regime.strain * 1000 + 0.5));
     f.title = "relative L2 error against nu, " + regime.label() + " (worst over loads)";
-    for (const auto& mesh : r.options.meshes) {
+    for (const auto& mesh : labels_of(r)) {
       CurvePanel p{mesh, "Poisson's ratio nu", "relative L2 error (worst load)", {}};
-      for (std::size_t m = 0; m < r.options.methods.size(); ++m) {
-        Series s{r.options.methods[m], styles[m % 7], {}, {}};
+      const std::vector<std::string> methods = methods_of(r, mesh);
+      for (std::size_t m = 0; m < methods.size(); ++m) {
+        Series s{methods[m], styles[m % 7], {}, {}};
         for (double nu : r.options.poisson) {
           double worst = -1.0;
           for (const auto& row : r.rows)
-            if (row.mesh == mesh && row.method == r.options.methods[m] && row.poisson == nu &&
+            if (row.mesh == mesh && row.method == methods[m] && row.poisson == nu &&
                 row.reference == regime.reference && row.strain == regime.strain && row.relative_l2 >= 0.0)
               worst = std::max(worst, row.relative_l2);
           if (worst < 0.0) continue;
@@ -134,23 +217,45 @@ NuRangeReport reproduce_nu_range(const std::filesystem::path& mesh_dir, const Nu
   const auto t0 = std::chrono::steady_clock::now();
   NuRangeReport r;
   r.options = options;
-  for (const auto& method : options.methods) calibrate::method_from_name(method);  // refuse unknown names first
+  for (const auto* list : {&options.methods, &options.triangle_methods})  // refuse unknown names first
+    for (const auto& method : *list) calibrate::method_from_name(method);
   for (const auto& load : options.loads) load_kind_from_name(load);
+  std::vector<material::Plane> planes;
+  for (const auto& p : options.planes) {
+    if (p != "stress" && p != "strain") throw InvalidArgument("unknown plane '" + p + "' (stress, strain)");
+    planes.push_back(p == "strain" ? material::Plane::kStrain : material::Plane::kStress);
+  }
   for (const auto& name : options.meshes) {
     const mesh::Mesh mesh = io::read_mesh(mesh_dir / (name + ".msh"));
-    for (const auto& load : options.loads)
-      for (const Regime& regime : regimes(options))
-        for (double nu : options.poisson)
-          for (const NuRangeRow& row : run_rows(mesh, name, load, regime, nu, options.methods)) {
-            r.rows.push_back(row);
-            char line[160];
-            std::snprintf(line, sizeof line, "nu-range: %-13s %-8s %5.3g %% %-6s nu %-5.3g %-21s relative L2 %.4g",
-                          name.c_str(), load.c_str(), 100.0 * regime.strain, regime.reference.c_str(), nu,
-                          row.method.c_str(), row.relative_l2);
-            log(LogLevel::kInfo, std::string(line) + (row.status == "converged" ? "" : " (" + row.status + ")"));
-          }
+    std::vector<Unit> units;
+    if (mesh.kind == mesh::ElementKind::kTet) {
+      units.push_back({name, &mesh, material::Plane::kStress, "", "tet", &options.methods});
+    } else if (mesh.kind == mesh::ElementKind::kTriangle) {
+      for (std::size_t k = 0; k < planes.size(); ++k) {
+        material::Material m;
+        m.plane = planes[k];
+        units.push_back({name, &mesh, planes[k], options.planes[k], calibrate::method_table_name(mesh.kind, m),
+                         &options.triangle_methods});
+      }
+    } else {
+      throw InvalidArgument("nu-range: " + name + " is a " + std::string(mesh::element_kind_name(mesh.kind)) +
+                            " mesh; the study runs tet and triangle meshes");
+    }
+    for (const Unit& unit : units)
+      for (const auto& load : options.loads)
+        for (const Regime& regime : regimes(options))
+          for (double nu : options.poisson)
+            for (const NuRangeRow& row : run_rows(unit, load, regime, nu)) {
+              r.rows.push_back(row);
+              char line[200];
+              std::snprintf(line, sizeof line, "nu-range: %-28s %-8s %5.3g %% %-6s nu %-5.3g %-21s relative L2 %.4g",
+                            row.mesh.c_str(), load.c_str(), 100.0 * regime.strain, regime.reference.c_str(), nu,
+                            row.method.c_str(), row.relative_l2);
+              log(LogLevel::kInfo, std::string(line) + (row.status == "converged" ? "" : " (" + row.status + ")"));
+            }
   }
   r.recommendations = recommend(r);
+  r.method_table = method_table(r);
   r.figures = figures(r);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
@@ -160,7 +265,8 @@ void write_nu_range_report(const std::filesystem::path& dir, const NuRangeReport
   create_output_folder(dir);
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& row : report.rows)
-    rows.push_back({{"mesh", row.mesh},
+    rows.push_back({{"table", row.table},
+                    {"mesh", row.mesh},
                     {"load", row.load},
                     {"reference", row.reference},
                     {"strain", row.strain},
@@ -168,12 +274,14 @@ void write_nu_range_report(const std::filesystem::path& dir, const NuRangeReport
                     {"method", row.method},
                     {"relative_l2", row.relative_l2},
                     {"status", row.status}});
-  const nlohmann::json j = {{"study", "spring models against FEM over Poisson's ratio (issue 15)"},
+  const nlohmann::json j = {{"study", "spring models against FEM over Poisson's ratio"},
                             {"youngs_modulus_pa", 14630.0},
                             {"rows", rows},
                             {"recommendations", report.recommendations},
                             {"seconds", report.seconds}};
   write_file_atomically(dir / "nu_range.json", [&](std::ostream& o) { o << j.dump(2) << '\n'; });
+  write_file_atomically(dir / "method_table.inc",
+                        [&](std::ostream& o) { o << calibrate::method_table_source(report.method_table); });
   for (const auto& f : report.figures) write_figure_spec(dir / "figures", f);
   write_file_atomically(dir / "nu_range.md", [&](std::ostream& o) {
     o << "# Spring models against FEM over Poisson's ratio\n\n"
@@ -181,10 +289,12 @@ void write_nu_range_report(const std::filesystem::path& dir, const NuRangeReport
       << "bottom clamped, uniform traction on the top giving the stated mean linear-FEM strain. Every number is in "
       << "nu_range.json; " << report.rows.size() << " comparisons in " << static_cast<int>(report.seconds)
       << " s. A dash is a failed solve (its message is in the JSON).\n\n## What to pick\n\n"
-      << "The method with the smallest worst-case error over both meshes, the three loads and every regime:\n\n";
+      << "Per table (tets; triangles in plane stress and in plane strain), the method with the smallest worst-case "
+         "error over its meshes, the three loads and every regime (`--method auto` picks by the small-strain, "
+         "linear-FEM regime alone: method_table.inc):\n\n";
     for (const auto& rec : report.recommendations) o << "- " << rec << "\n";
     for (const auto& f : report.figures) o << "\n![" << f.title << "](figures/" << f.name << ".png)\n";
-    for (const auto& mesh : report.options.meshes)
+    for (const auto& mesh : labels_of(report))
       for (const auto& load : report.options.loads)
         for (const Regime& regime : regimes(report.options)) {
           o << "\n## " << mesh << ", " << load << ", " << regime.label() << "\n\n| method |";
@@ -192,7 +302,7 @@ void write_nu_range_report(const std::filesystem::path& dir, const NuRangeReport
           o << "\n|---|";
           for (std::size_t k = 0; k < report.options.poisson.size(); ++k) o << "---|";
           o << "\n";
-          for (const auto& method : report.options.methods) {
+          for (const auto& method : methods_of(report, mesh)) {
             o << "| " << method << " |";
             for (double nu : report.options.poisson) {
               std::string cell = " ? |";

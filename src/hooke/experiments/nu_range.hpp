@@ -1,8 +1,11 @@
 #pragma once
-/// The study beyond the paper (issue 15): every tet calibration method against the FEM over Poisson's ratios from 0
-/// to 0.49, stretch / compress / shear, in the linear regime and at 12 % strain (against linear and StVK FEM), on
-/// the cylinder with a hole and the cone, with a figure of error against nu and a recommendation per nu.
+/// The study beyond the papers: every calibration method against the FEM over Poisson's ratios from 0 to 0.49,
+/// stretch / compress / shear, in the linear regime and at 12 % strain (against linear and StVK FEM), on the cylinder
+/// with a hole and the cone (tet methods) and a triangulated rectangle in plane stress and plane strain (triangle
+/// methods), with a figure of error against nu, a recommendation per nu and the table `--method auto` picks from
+/// (calibrate::choose_method).
 #include <filesystem>
+#include <hooke/calibrate/method_choice.hpp>
 #include <hooke/experiments/figure.hpp>
 #include <string>
 #include <vector>
@@ -12,8 +15,12 @@ namespace hooke::experiments {
 struct NuRangeOptions {
   std::vector<double> poisson = {0.0, 0.1, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.49};  ///< nu values
   std::vector<std::string> methods = {"lloyd-tet", "lloyd-tet-volume", "stiffness-fit", "stiffness-fit-volume",
-                                      "any-nu-tet"};            ///< tet methods
-  std::vector<std::string> meshes = {"cylinder_hole", "cone"};  ///< committed meshes (data/meshes/<name>.msh)
+                                      "any-nu-tet"};  ///< methods for tet meshes
+  std::vector<std::string> triangle_methods = {"lloyd-triangle", "any-nu-triangle", "stiffness-fit",
+                                               "vangelder"};  ///< methods for triangle meshes
+  std::vector<std::string> planes = {"stress", "strain"};     ///< the 2D reductions triangle meshes are run in
+  /// committed meshes (data/meshes/<name>.msh), tets or triangles
+  std::vector<std::string> meshes = {"cylinder_hole", "cone", "rectangle_tri"};
   std::vector<std::string> loads = {"stretch", "compress", "shear"};
   double small_strain = 0.001;  ///< the linear regime, default 0.1 %
   double large_strain = 0.12;   ///< the papers' large deformation, default 12 % (0: skip both large regimes)
@@ -21,6 +28,7 @@ struct NuRangeOptions {
 
 /// One comparison: a method at one nu on one mesh, load and regime.
 struct NuRangeRow {
+  std::string table;  ///< calibrate::method_table_name of the mesh and material: "tet", "triangle plane-stress", ...
   std::string mesh, load;
   std::string reference;  ///< "linear" or "stvk"
   double strain = 0.0;    ///< mean linear-FEM strain of the load
@@ -33,8 +41,11 @@ struct NuRangeRow {
 struct NuRangeReport {
   NuRangeOptions options;
   std::vector<NuRangeRow> rows;
-  /// Per nu, the method with the smallest worst-case error over meshes, loads and regimes, with that error.
+  /// Per table and nu, the method with the smallest worst-case error over meshes, loads and regimes, with that error.
   std::vector<std::string> recommendations;
+  /// Per table, nu and method, the worst error at small strain against the linear FEM over the table's meshes and
+  /// loads (what `--method auto` picks from; a method that failed a case where another converged is left out).
+  std::vector<calibrate::MeasuredError> method_table;
   std::vector<Figure> figures;  ///< error against nu per method, one figure per regime
   double seconds = 0.0;
 };
@@ -44,8 +55,9 @@ struct NuRangeReport {
 /// @throws IoError when a mesh is missing; InvalidArgument for an unknown method or load
 NuRangeReport reproduce_nu_range(const std::filesystem::path& mesh_dir, const NuRangeOptions& options = {});
 
-/// Writes `dir`/nu_range.json (every row), `dir`/nu_range.md (one table per mesh, load and regime: methods x nu; the
-/// recommendations) and the figure specs under `dir`/figures/.
+/// Writes `dir`/nu_range.json (every row), `dir`/nu_range.md (one table per mesh, plane, load and regime: methods x
+/// nu; the recommendations), `dir`/method_table.inc (the method table as src/hooke/calibrate/method_table.inc holds it)
+/// and the figure specs under `dir`/figures/.
 void write_nu_range_report(const std::filesystem::path& dir, const NuRangeReport& report);
 
 }  // namespace hooke::experiments

@@ -24,7 +24,7 @@ std::string_view objective_name(Objective objective);
 
 struct IdentifyOptions {
   Parameters parameters = Parameters::kSprings;  ///< what is fitted, default springs
-  Objective objective = Objective::kForces;      ///< default forces (Eq. 2)
+  Objective objective = Objective::kPositions;   ///< default positions (Eq. 1 from the Eq. 2 fit)
   /// Weight w of the penalty toward the mean stiffness that Lloyd et al. suggest (Sec. 2): w^2 c^2 |theta_g -
   /// mean(theta_g)|^2 for the springs and for the volume terms, c the RMS column norm of U in the group, so w is
   /// dimensionless (w = 1 pulls as hard as one typical data row). Default 0 (none).

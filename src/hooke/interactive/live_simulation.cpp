@@ -164,10 +164,11 @@ LiveSimulation::LiveSimulation(const mesh::Mesh& mesh, const LiveSettings& setti
 LiveSimulation::LiveSimulation(calibrate::CalibratedModel model, const LiveSettings& settings)
     : m(std::make_unique<Impl>()) {
   check_settings(settings);
-  // "file", or the model's own method with its own material and density, runs the model as it is.
-  const bool as_is = settings.method == "file" ||
-                     (settings.method == model.method && same_material(settings.material, model.material) &&
-                      settings.density == model.density);
+  // "file", or the model's own method (or "auto" for a model "auto" chose) with its own material and density, runs
+  // the model as it is.
+  const bool same_method = settings.method == model.method || (settings.method == "auto" && !model.choice.empty());
+  const bool as_is = settings.method == "file" || (same_method && same_material(settings.material, model.material) &&
+                                                   settings.density == model.density);
   if (!as_is) model = calibrate_for(model.mesh, settings);
   m->settings = settings;
   m->built = calibrate::build_model(model);

@@ -20,7 +20,7 @@ namespace hooke::interactive {
 /// What a user can change while the simulation runs.
 struct LiveSettings {
   /// Model factory name (calibrate::model_method_names()); "file" keeps the model the simulation was made from.
-  std::string method = "lloyd-tet";
+  std::string method = "auto";
   material::Material material;        ///< E (Pa), nu, thickness (2D); the law matters for "fem" only
   double density = 1000.0;            ///< kg/m^3 (> 0)
   calibrate::SurfaceOptions surface;  ///< "surface" only: scheme, anchor law, volume penalty

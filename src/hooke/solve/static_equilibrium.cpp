@@ -291,8 +291,11 @@ StaticResult static_equilibrium(const model::Problem& problem, const StaticOptio
     newton.accept(std::move(x), lambda);
     step = std::min(step * 1.5, 1.0);
   }
-  return finish(SolveStatus::kConverged, "converged in " + std::to_string(rep.iterations) + " Newton iterations over " +
-                                             std::to_string(rep.load_steps) + " load steps");
+  const auto count = [](int n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); };
+  if (rep.iterations == 0)  // a linear problem started at its solution, or no load
+    return finish(SolveStatus::kConverged, "the start already is the equilibrium (residual within the tolerance)");
+  return finish(SolveStatus::kConverged, "converged in " + count(rep.iterations, "Newton iteration") + " over " +
+                                             count(rep.load_steps, "load step"));
 }
 
 }  // namespace hooke::solve
