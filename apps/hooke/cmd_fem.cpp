@@ -56,8 +56,7 @@ int run_fem(const FemOptions& o) {
   const double traction =
       std::isnan(o.strain) ? o.traction : experiments::traction_for_strain(m, {mat}, kind, o.strain);
 
-  auto model = std::make_shared<model::Model>(m.dim(), Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size()));
-  model->add(fem::make_elastic_block(m, mat));
+  const auto model = fem::elastic_model(m, {mat});
   model::Problem problem = model::make_problem(model);
   const experiments::LoadCase lc = experiments::make_load_case(m, kind, traction, mat.thickness);
   experiments::apply(lc, problem);

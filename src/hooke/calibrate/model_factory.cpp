@@ -129,7 +129,7 @@ BuiltModel build_model(const CalibratedModel& m) {
   BuiltModel out;
   out.model = std::make_shared<model::Model>(d, Eigen::Map<const VecX>(m.mesh.nodes.data(), m.mesh.nodes.size()));
   if (m.method == "fem") {
-    out.model->add(fem::make_elastic_block(m.mesh, m.material));
+    out.model = fem::elastic_model(m.mesh, {m.material});
     return out;
   }
   add_spring_terms(*out.model, m.springs);

@@ -61,10 +61,7 @@ StiffnessScale fit_self_weight_scale(const mesh::Mesh& mesh, const std::vector<m
   const VecX rest = Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size());  // row-major: node-major flat
 
   // K_FEM of the linear law (every law linearises to it at rest), the springs' K_s and the volume terms' K_V.
-  std::vector<material::Material> linear = materials;
-  for (auto& mat : linear) mat.law = material::Law::kLinear;
-  auto fem_model = std::make_shared<model::Model>(d, rest);
-  fem_model->add(std::make_unique<fem::ElasticBlock>(mesh, linear));
+  const auto fem_model = fem::linear_model(mesh, materials);
   const SparseMatrix k_fem = fem_model->hessian(rest);
   const SparseMatrix k_springs = linearised_stiffness(mesh, springs_part(springs));
   const bool has_volume = springs.volume_stiffness.size() > 0;

@@ -142,8 +142,7 @@ ShearComparison arnab2008_fig12(double nu, Figure* figure) {
   for (int i = 0; i < tets.node_count(); ++i)
     if (tets.nodes(i, 2) < 1e-12 * a) bottom_tets.push_back(i);
   model::fix_nodes(ps, bottom_surface);
-  auto fem_model = std::make_shared<model::Model>(3, Eigen::Map<const VecX>(tets.nodes.data(), tets.nodes.size()));
-  fem_model->add(fem::make_elastic_block(tets, {material::Law::kLinear, e, nu}));
+  auto fem_model = fem::linear_model(tets, {{material::Law::kLinear, e, nu}});
   model::Problem pf = model::make_problem(fem_model);
   pf.external_force = VecX::Zero(fem_model->dof_count());
   for (int i = 0; i < s.mesh.node_count(); ++i)

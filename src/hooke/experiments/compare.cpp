@@ -15,11 +15,7 @@ VecX rest_of(const mesh::Mesh& m) { return Eigen::Map<const VecX>(m.nodes.data()
 // The FEM reference under `load` (linear: one linear solve; otherwise Newton with the stability check).
 solve::StaticResult solve_fem(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
                               material::Law law, const LoadCase& load) {
-  std::vector<material::Material> reference = materials;
-  for (auto& m : reference) m.law = law;
-  auto model = std::make_shared<model::Model>(mesh.dim(), rest_of(mesh));
-  model->add(std::make_unique<fem::ElasticBlock>(mesh, reference));
-  model::Problem problem = model::make_problem(model);
+  model::Problem problem = model::make_problem(fem::elastic_model(mesh, materials, law));
   apply(load, problem);
   return law == material::Law::kLinear ? solve::linear_static(problem) : solve::static_equilibrium(problem);
 }

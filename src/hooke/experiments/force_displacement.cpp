@@ -50,10 +50,7 @@ ForceDisplacement force_displacement(const mesh::Mesh& mesh, const material::Mat
                                      calibrate::Method method, const std::vector<double>& forces) {
   const Ends e = ends(mesh);
   const auto springs = calibrate::make_model(mesh, calibrate::calibrate(mesh, {material}, method));
-  material::Material linear = material;
-  linear.law = material::Law::kLinear;
-  auto fem = std::make_shared<model::Model>(mesh.dim(), Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size()));
-  fem->add(fem::make_elastic_block(mesh, linear));
+  auto fem = fem::linear_model(mesh, {material});
   ForceDisplacement out;
   for (double f : forces) {
     const solve::StaticResult s = solve::static_equilibrium(loaded(springs, mesh, e, f));

@@ -175,16 +175,10 @@ std::vector<identify::ReferenceCase> fem_reference_cases(const mesh::Mesh& mesh,
   const std::vector<PendingCase> pending = pending_cases(mesh, b, ends, loads, material.thickness);
 
   const VecX rest = mesh::flat_positions(mesh);
-  material::Material linear = material;
-  linear.law = material::Law::kLinear;
-  auto linear_model = std::make_shared<model::Model>(d, rest);
-  linear_model->add(fem::make_elastic_block(mesh, linear));
+  auto linear_model = fem::linear_model(mesh, {material});
   const SparseMatrix stiffness = linear_model->hessian(rest);
   std::shared_ptr<model::Model> nonlinear_model;
-  if (material.law != material::Law::kLinear) {
-    nonlinear_model = std::make_shared<model::Model>(d, rest);
-    nonlinear_model->add(fem::make_elastic_block(mesh, material));
-  }
+  if (material.law != material::Law::kLinear) nonlinear_model = fem::elastic_model(mesh, {material});
 
   std::vector<identify::ReferenceCase> out;
   for (const AxisEnds& e : ends) {

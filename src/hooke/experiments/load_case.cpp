@@ -84,12 +84,7 @@ double mean_top_displacement(const LoadCase& load, const model::Problem& problem
 double traction_for_strain(const mesh::Mesh& mesh, const std::vector<material::Material>& materials, LoadKind kind,
                            double strain) {
   if (!(strain > 0.0) || !std::isfinite(strain)) throw InvalidArgument("the strain must be a positive number");
-  std::vector<material::Material> linear = materials;
-  for (auto& m : linear) m.law = material::Law::kLinear;
-  const VecX rest = Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size());
-  auto m = std::make_shared<model::Model>(mesh.dim(), rest);
-  m->add(std::make_unique<fem::ElasticBlock>(mesh, linear));
-  model::Problem problem = model::make_problem(m);
+  model::Problem problem = model::make_problem(fem::linear_model(mesh, materials));
   const LoadCase unit = make_load_case(mesh, kind, 1.0, materials.at(0).thickness);
   apply(unit, problem);
   const solve::StaticResult r = solve::linear_static(problem);

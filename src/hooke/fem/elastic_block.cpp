@@ -174,4 +174,13 @@ std::unique_ptr<ElasticBlock> make_elastic_block(const mesh::Mesh& mesh, const m
   return std::make_unique<ElasticBlock>(mesh, std::vector<material::Material>{material});
 }
 
+std::shared_ptr<model::Model> elastic_model(const mesh::Mesh& mesh, std::vector<material::Material> materials,
+                                            std::optional<material::Law> law) {
+  if (law)
+    for (auto& m : materials) m.law = *law;
+  auto out = std::make_shared<model::Model>(mesh.dim(), Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size()));
+  out->add(std::make_unique<ElasticBlock>(mesh, materials));
+  return out;
+}
+
 }  // namespace hooke::fem

@@ -4,7 +4,9 @@
 #include <hooke/material/material.hpp>
 #include <hooke/mesh/mesh.hpp>
 #include <hooke/model/term_block.hpp>
+#include <hooke/model/model.hpp>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace hooke::fem {
@@ -51,5 +53,17 @@ class ElasticBlock final : public model::TermBlock {
 
 /// Convenience: one material for every element.
 std::unique_ptr<ElasticBlock> make_elastic_block(const mesh::Mesh& mesh, const material::Material& material);
+
+/// The FEM model of `mesh`: one ElasticBlock over every element, at the mesh's rest positions (m), with
+/// `materials` (one, or one per element) under their own laws, or all under `law` when given.
+/// @throws as ElasticBlock
+std::shared_ptr<model::Model> elastic_model(const mesh::Mesh& mesh, std::vector<material::Material> materials,
+                                            std::optional<material::Law> law = std::nullopt);
+
+/// The linear FEM model of `mesh` (elastic_model under the linear law): its Hessian is the stiffness K, N/m.
+inline std::shared_ptr<model::Model> linear_model(const mesh::Mesh& mesh,
+                                                  const std::vector<material::Material>& materials) {
+  return elastic_model(mesh, materials, material::Law::kLinear);
+}
 
 }  // namespace hooke::fem
