@@ -206,8 +206,7 @@ std::vector<identify::ReferenceCase> fem_reference_cases(const mesh::Mesh& mesh,
                               " FEM): " + r.report.message);
         c.positions = r.positions;
       }
-      for (std::size_t q = 0; q < c.fixed_dofs.size(); ++q)
-        if (c.fixed_dofs[q]) c.external_force(static_cast<Eigen::Index>(q)) = 0.0;
+      model::zero_fixed_forces(c.fixed_dofs, c.external_force);
       out.push_back(std::move(c));
     }
   }

@@ -69,8 +69,7 @@ void apply(const LoadCase& load, model::Problem& problem) {
     throw InvalidArgument("load case and problem belong to different meshes");
   model::fix_nodes(problem, load.fixed_nodes);
   problem.external_force = load.nodal_forces;
-  for (Eigen::Index i = 0; i < problem.external_force.size(); ++i)
-    if (problem.fixed_dofs[static_cast<size_t>(i)]) problem.external_force(i) = 0.0;
+  model::zero_fixed_forces(problem);
 }
 
 double mean_top_displacement(const LoadCase& load, const model::Problem& problem, const VecX& positions) {

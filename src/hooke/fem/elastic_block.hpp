@@ -3,8 +3,8 @@
 #include <hooke/core/element_schedule.hpp>
 #include <hooke/material/material.hpp>
 #include <hooke/mesh/mesh.hpp>
-#include <hooke/model/term_block.hpp>
 #include <hooke/model/model.hpp>
+#include <hooke/model/term_block.hpp>
 #include <memory>
 #include <optional>
 #include <vector>

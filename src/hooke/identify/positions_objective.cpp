@@ -22,8 +22,7 @@ solve::StaticResult reference_equilibrium(std::shared_ptr<const model::Model> mo
   problem.fixed_dofs = reference.fixed_dofs;
   problem.prescribed_positions = reference.positions;
   problem.external_force = reference.external_force;
-  for (std::size_t k = 0; k < reference.fixed_dofs.size(); ++k)
-    if (reference.fixed_dofs[k]) problem.external_force(static_cast<Eigen::Index>(k)) = 0.0;
+  model::zero_fixed_forces(problem);
   solve::StaticOptions options = statics;
   options.start = start.size() ? start : reference.positions;
   return solve::static_equilibrium(problem, options);

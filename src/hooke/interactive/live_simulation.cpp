@@ -330,8 +330,7 @@ ProbeEquilibrium probe_equilibrium(const calibrate::CalibratedModel& cm, const s
   problem.external_force = VecX::Zero(built.model->dof_count());
   if (gravity)
     for (int i = 0; i < n; ++i) problem.external_force(d * i + d - 1) = -9.81 * cm.masses(d * i + d - 1);
-  for (size_t i = 0; i < problem.fixed_dofs.size(); ++i)
-    if (problem.fixed_dofs[i]) problem.external_force(static_cast<Eigen::Index>(i)) = 0.0;
+  model::zero_fixed_forces(problem);
   // The prescribed displacement is applied at once; the linear solution is a start close enough that Newton does
   // not begin from a state with the grabbed nodes torn out of their elements.
   solve::StaticOptions options;

@@ -22,6 +22,14 @@ void fix_nodes(Problem& problem, const std::vector<int>& nodes) {
   }
 }
 
+void zero_fixed_forces(const std::vector<char>& fixed_dofs, VecX& force) {
+  if (static_cast<Eigen::Index>(fixed_dofs.size()) != force.size())
+    throw InvalidArgument("zero_fixed_forces: " + std::to_string(fixed_dofs.size()) + " DOF flags for " +
+                          std::to_string(force.size()) + " forces");
+  for (std::size_t k = 0; k < fixed_dofs.size(); ++k)
+    if (fixed_dofs[k]) force(static_cast<Eigen::Index>(k)) = 0.0;
+}
+
 std::vector<int> free_dofs(const Problem& problem) {
   const Model& m = *problem.model;
   const SparseMatrix k = m.hessian(m.rest_positions());

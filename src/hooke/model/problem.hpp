@@ -25,6 +25,12 @@ Problem make_problem(std::shared_ptr<const Model> model);
 /// Fixes all DOFs of `nodes` at their rest positions.
 void fix_nodes(Problem& problem, const std::vector<int>& nodes);
 
+/// Sets `force` (N, per DOF) to zero on every DOF `fixed_dofs` marks: a support takes whatever load acts there.
+/// @pre equal sizes
+void zero_fixed_forces(const std::vector<char>& fixed_dofs, VecX& force);
+/// The same on a problem's own external force.
+inline void zero_fixed_forces(Problem& problem) { zero_fixed_forces(problem.fixed_dofs, problem.external_force); }
+
 /// Indices of the free DOFs of `problem` that carry stiffness: fixed DOFs and DOFs of nodes on which the
 /// model's Hessian at rest has an empty diagonal (nodes in no element) are excluded.
 std::vector<int> free_dofs(const Problem& problem);
