@@ -82,6 +82,11 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
   ImGui::Separator();
 
   interactive::LiveSettings& e = state.edit;
+  // A model whose constants hooke cannot remake ("file": a hand-tuned model file) keeps its material.
+  const bool fixed_material = e.method == "file";
+  if (fixed_material)
+    ImGui::TextWrapped("This model's constants are its own: E and nu are fixed (choose a method to recalibrate).");
+  ImGui::BeginDisabled(fixed_material);
   float log_e = static_cast<float>(std::log10(e.material.youngs_modulus));
   ImGui::SliderFloat("log10 E (Pa)", &log_e, 2.0f, 9.0f, "%.2f");
   if (ImGui::IsItemEdited()) e.material.youngs_modulus = std::pow(10.0, static_cast<double>(log_e));
@@ -92,6 +97,7 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
   ImGui::SliderFloat("Poisson nu", &nu, -0.2f, 0.499f, "%.3f");
   if (ImGui::IsItemEdited()) e.material.poisson_ratio = nu;
   r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
+  ImGui::EndDisabled();
   std::vector<std::string> methods = calibrate::model_method_names();
   methods.insert(methods.begin(), "file");
   r.apply_settings |= combo("method", e.method, methods);

@@ -6,6 +6,7 @@
 #include <commands.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/interactive/fields.hpp>
+#include <hooke/interactive/live_simulation.hpp>
 #include <hooke/interactive/script.hpp>
 #include <memory>
 
@@ -29,8 +30,9 @@ int run_view(ViewCli o) {
   // Everything is checked before a window opens: the model, the settings, the script, the colour map.
   ViewerOptions v = o.run;
   v.model = cli::load_model(o.in);
-  // A model file runs as it is ("file"); a calibration keeps its method's name ("auto" re-picks when nu changes).
-  v.settings.method = o.in.model_path.empty() ? o.in.method : "file";
+  // A calibration keeps its method's name ("auto" re-picks when nu changes); a model file runs as it is and is remade
+  // by its own method when the sliders change its material (interactive::live_method_for; "file" when hooke cannot).
+  v.settings.method = o.in.model_path.empty() ? o.in.method : interactive::live_method_for(v.model);
   v.settings.material = v.model.material;
   v.settings.density = v.model.density;
   if (v.model.method == "surface") v.settings.surface = cli::surface_options(o.in.surface);

@@ -158,5 +158,43 @@ TEST(ApplySetting, ParsesAndRefuses) {
   EXPECT_THROW(apply_setting(s, "integrator", "rk4"), InvalidArgument);
 }
 
+// A model file with a method hooke calibrates is remade by it when the material changes (the viewer's sliders on
+// `--model`); one with constants of its own ("file") refuses a new material instead of showing it and running the
+// old springs (which it did before: the settings took nu = 0.45, the springs stayed those of 0.3).
+TEST(LiveSimulation, AModelFileIsRecalibratedByItsMethodOrRefusesANewMaterial) {
+  const mesh::Mesh m = cylinder();
+  calibrate::ModelOptions o;
+  o.method = "lloyd-tet";
+  const material::Material at3{material::Law::kLinear, 14630.0, 0.3};
+  calibrate::CalibratedModel made = calibrate::calibrate_model(m, at3, o);
+  EXPECT_EQ(live_method_for(made), "lloyd-tet");
+  EXPECT_EQ(live_method_for(calibrate::calibrate_model(m, at3, {})), "auto");
+  LiveSettings s = settings(live_method_for(made), 0.3);
+  LiveSimulation sim(made, s);
+  EXPECT_EQ(sim.model().springs.stiffness, made.springs.stiffness);  // run as it is
+  s.material.poisson_ratio = 0.45;
+  sim.apply(s);
+  o.method = "lloyd-tet";
+  const calibrate::CalibratedModel fresh = calibrate::calibrate_model(m, {material::Law::kLinear, 14630.0, 0.45}, o);
+  EXPECT_EQ(sim.model().material.poisson_ratio, 0.45);
+  EXPECT_EQ(sim.model().springs.stiffness, fresh.springs.stiffness);
+
+  calibrate::CalibratedModel tuned = made;
+  tuned.method = "hand-tuned";
+  tuned.springs.stiffness *= 1.5;
+  EXPECT_EQ(live_method_for(tuned), "file");
+  LiveSettings f = settings("file", 0.3);
+  LiveSimulation own(tuned, f);
+  EXPECT_EQ(own.model().springs.stiffness, tuned.springs.stiffness);
+  f.material.poisson_ratio = 0.45;
+  EXPECT_THROW(own.apply(f), InvalidArgument);
+  EXPECT_EQ(own.settings().material.poisson_ratio, 0.3);
+  EXPECT_EQ(own.model().springs.stiffness, tuned.springs.stiffness);
+  f.material.poisson_ratio = 0.3;
+  f.damping_mass = 10.0;  // other settings still apply
+  own.apply(f);
+  EXPECT_EQ(own.settings().damping_mass, 10.0);
+}
+
 }  // namespace
 }  // namespace hooke::interactive

@@ -71,7 +71,7 @@ void define_live_simulation(py::module_& m) {
       .def(py::init([](const calibrate::CalibratedModel& model, const std::string& integrator, double dt,
                        const py::kwargs& kwargs) {
              interactive::LiveSettings s;
-             s.method = "file";
+             s.method = interactive::live_method_for(model);
              s.material = model.material;
              s.density = model.density;
              s.simulator.integrator = solve::integrator_from_name(integrator);

@@ -1,4 +1,5 @@
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/load_case.hpp>
@@ -180,9 +181,20 @@ LiveSimulation::~LiveSimulation() = default;
 LiveSimulation::LiveSimulation(LiveSimulation&&) noexcept = default;
 LiveSimulation& LiveSimulation::operator=(LiveSimulation&&) noexcept = default;
 
+std::string live_method_for(const calibrate::CalibratedModel& model) {
+  if (!model.choice.empty()) return "auto";
+  const std::vector<std::string> names = calibrate::model_method_names();
+  return std::find(names.begin(), names.end(), model.method) != names.end() ? model.method : "file";
+}
+
 void LiveSimulation::apply(const LiveSettings& s) {
   check_settings(s);
   const LiveSettings& old = m->settings;
+  // "file" keeps the model's own constants: a new material would show in the settings but not in the body.
+  if (s.method == "file" && (!same_material(s.material, m->model.material) || s.density != m->model.density ||
+                             !same_surface(s.surface, old.surface)))
+    throw InvalidArgument("this model's constants are its own (method '" + m->model.method +
+                          "', not one hooke calibrates): a new E, nu, density or surface option needs a method");
   const bool recalibrate = s.method != "file" && (s.method != old.method || !same_material(s.material, old.material) ||
                                                   s.density != old.density || !same_surface(s.surface, old.surface));
   // Build everything new first (strong guarantee), then swap.

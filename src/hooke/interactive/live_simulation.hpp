@@ -44,6 +44,11 @@ struct ProbeEquilibrium {
   std::string message;  ///< the static solver's outcome
 };
 
+/// The LiveSettings::method that runs `model` as it is and, when E, nu or the density change, remakes it as it was
+/// made: "auto" for a model "auto" chose, its own method when the model factory knows it, else "file" (constants
+/// hooke cannot remake, such as a hand-tuned model file: a change of material is then refused).
+std::string live_method_for(const calibrate::CalibratedModel& model);
+
 class LiveSimulation {
  public:
   /// Calibrates settings.method on `mesh` (validated, m) for settings.material.
