@@ -38,8 +38,7 @@ identify::IdentifyOptions identify_options(const IdentifyCli& o, const mesh::Mes
   options.position_iterations = o.iterations;
   options.least_squares.tolerance = o.tolerance;
   options.negative_volume = o.negative_volume;
-  if (o.regularization < 0.0 || o.stiffness_floor < 0.0 || o.stiffness_floor >= 1.0)
-    throw InvalidArgument("--regularize must be >= 0 and --stiffness-floor in [0, 1)");
+  identify::validate_options(options);
   return options;
 }
 

@@ -65,3 +65,13 @@ def test_identify_passes_tolerance_and_negative_volume_through():
     free, free_report = hooke.identify(mesh, material, held_out=0, objective="forces", negative_volume=True)
     assert free.volume_stiffness.min() < 0.0
     assert free_report["force_residual"] < tight_report["force_residual"]
+
+
+def test_identify_refuses_options_out_of_range():
+    # the ranges are the library's (they were checked by the CLI alone: stiffness_floor=5 was taken)
+    mesh = cylinder()
+    material = hooke.Material(14630.0, 0.3)
+    for kwargs, what in [({"stiffness_floor": 5.0}, "stiffness floor"), ({"regularize": -1.0}, "regularization"),
+                         ({"iterations": -2}, "iterations")]:
+        with pytest.raises(hooke.InvalidArgument, match=what):
+            hooke.identify(mesh, material, **kwargs)

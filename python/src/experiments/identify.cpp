@@ -51,6 +51,7 @@ void define_identify(py::module_& m) {
         options.position_iterations = iterations;
         options.least_squares.tolerance = tolerance;
         options.negative_volume = negative_volume;
+        identify::validate_options(options);  // before the references are built
         const std::string analytic = compare == "auto" ? experiments::default_analytic_method(mesh) : compare;
         std::vector<identify::ReferenceCase> cases;
         if (!references.is_none()) {

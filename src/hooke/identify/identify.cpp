@@ -267,12 +267,25 @@ Identification identify_scale(const mesh::Mesh& mesh, const std::vector<Referenc
 
 }  // namespace
 
-Identification identify(const mesh::Mesh& mesh, const std::vector<ReferenceCase>& cases,
-                        const IdentifyOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
+void validate_options(const IdentifyOptions& options) {
   if (!(options.least_squares.tolerance > 0.0 && options.least_squares.tolerance < 1.0))
     throw InvalidArgument("identification: the Eq. 2 tolerance must be in (0, 1), got " +
                           std::to_string(options.least_squares.tolerance));
+  if (!(options.regularization >= 0.0) || !std::isfinite(options.regularization))
+    throw InvalidArgument("identification: the regularization weight must be a finite number >= 0, got " +
+                          std::to_string(options.regularization));
+  if (!(options.stiffness_floor >= 0.0 && options.stiffness_floor < 1.0))
+    throw InvalidArgument("identification: the stiffness floor must be in [0, 1) of the mean k, got " +
+                          std::to_string(options.stiffness_floor));
+  if (options.position_iterations < 0)
+    throw InvalidArgument("identification: the Eq. 1 iterations must be >= 0, got " +
+                          std::to_string(options.position_iterations));
+}
+
+Identification identify(const mesh::Mesh& mesh, const std::vector<ReferenceCase>& cases,
+                        const IdentifyOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  validate_options(options);
   if (options.parameters == Parameters::kScale) return identify_scale(mesh, cases, options, t0);
   const VecX rest_positions = mesh::flat_positions(mesh);
   for (const auto& c : cases) validate_reference(c, rest_positions.size());

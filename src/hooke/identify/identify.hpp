@@ -73,6 +73,11 @@ struct Identification {
   IdentifyReport report;
 };
 
+/// Checks the ranges of `options`: the Eq. 2 tolerance in (0, 1), the regularization weight >= 0, the stiffness
+/// floor in [0, 1), the Eq. 1 iterations >= 0 (identify() calls it; front ends call it before building references).
+/// @throws InvalidArgument naming the option and its value
+void validate_options(const IdentifyOptions& options);
+
 /// Identifies a spring model on `mesh` from the cases not held out. Forces: Eq. 2 as a bounded least-squares
 /// problem with the rows of every training case's free DOFs, every k >= stiffness_floor x the mean k; with rest
 /// lengths, the fitted l0 are then fixed and k,
