@@ -123,6 +123,10 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
       e.simulator.global_solve = solve::global_solve_from_name(global);
       r.apply_settings = true;
     }
+    if (e.simulator.global_solve == solve::GlobalSolve::kChebyshev)  // its accuracy beside its speed
+      ImGui::TextWrapped(
+          "chebyshev: measured 1.6e-3 of the largest displacement off a converged step (1 089 nodes, "
+          "300 steps; `hooke bench` measures it on other meshes)");
     int iterations = e.simulator.local_global_iterations;
     if (ImGui::SliderInt("iterations", &iterations, 1, 30)) e.simulator.local_global_iterations = iterations;
     r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
