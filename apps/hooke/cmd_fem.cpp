@@ -47,8 +47,7 @@ int run_fem(const FemOptions& o) {
   mat.youngs_modulus = o.in.young;
   mat.poisson_ratio = o.in.poisson;
   mat.thickness = o.in.thickness;
-  if (o.plane != "stress" && o.plane != "strain") throw InvalidArgument("--plane takes stress or strain");
-  mat.plane = o.plane == "stress" ? material::Plane::kStress : material::Plane::kStrain;
+  mat.plane = material::plane_from_name(o.plane);
   material::validate(mat);
   const experiments::LoadKind kind = experiments::load_kind_from_name(o.load);
   if (std::isnan(o.traction) == std::isnan(o.strain))

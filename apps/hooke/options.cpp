@@ -84,9 +84,7 @@ calibrate::CalibratedModel load_model(const ModelSource& in) {
     throw InvalidArgument("--young and --poisson are required (or --model MODEL.json)");
   // The law is the FEM model's (--method fem); every calibration starts from the linear material.
   material::Material mat{in.method == "fem" ? material::law_from_name(in.law) : material::Law::kLinear, in.young,
-                         in.poisson, in.plane == "strain" ? material::Plane::kStrain : material::Plane::kStress,
-                         in.thickness};
-  if (in.plane != "stress" && in.plane != "strain") throw InvalidArgument("--plane must be stress or strain");
+                         in.poisson, material::plane_from_name(in.plane), in.thickness};
   calibrate::ModelOptions mo;
   mo.method = in.method;
   mo.density = in.density;

@@ -95,3 +95,17 @@ def test_reproduce_arnab2008_returns_the_report_as_a_dict(tmp_path):
     assert all(abs(row["deviation_percent"]) < 5.0 for row in table1)  # the paper's Table 1 within a few percent
     with pytest.raises(hooke.InvalidArgument):
         hooke.reproduce("smith1999", tmp_path)
+
+
+def test_auto_picks_by_kind_and_plane_and_says_why():
+    import pathlib
+
+    mesh = hooke.read_mesh(str(pathlib.Path(__file__).parents[2] / "data" / "meshes" / "rectangle_tri.msh"))
+    for plane in ("stress", "strain"):
+        material = hooke.Material(14630.0, 0.45, thickness=0.001, plane=plane)
+        assert material.plane == plane
+        model = hooke.calibrate(mesh, material)
+        assert model.method == "any-nu-triangle"
+        assert ("plane-" + plane) in model.choice
+    with pytest.raises(hooke.InvalidArgument, match="plane"):
+        hooke.Material(14630.0, 0.3, plane="shear")

@@ -48,8 +48,6 @@ std::string int_row(const RowMatXi& m, Eigen::Index i) {
   return s + "]";
 }
 
-std::string plane_name(material::Plane p) { return p == material::Plane::kStress ? "stress" : "strain"; }
-
 void write_surface(std::ostream& out, const SurfaceTerms& s) {
   out << "  \"surface\": {\n    \"scheme\": " << str(s.scheme) << ",\n    \"centre\": [" << num(s.centre(0)) << ", "
       << num(s.centre(1)) << ", " << num(s.centre(2))
@@ -131,9 +129,11 @@ material::Material read_material(const Reader& r, const json& j, double& density
   }
   m.youngs_modulus = r.number(r.key(j, "material", "youngs_modulus"), "material.youngs_modulus");
   m.poisson_ratio = r.number(r.key(j, "material", "poisson_ratio"), "material.poisson_ratio");
-  const std::string plane = r.string(r.key(j, "material", "plane"), "material.plane");
-  if (plane != "stress" && plane != "strain") r.fail("material.plane", "must be \"stress\" or \"strain\"");
-  m.plane = plane == "stress" ? material::Plane::kStress : material::Plane::kStrain;
+  try {
+    m.plane = material::plane_from_name(r.string(r.key(j, "material", "plane"), "material.plane"));
+  } catch (const InvalidArgument&) {
+    r.fail("material.plane", "must be \"stress\" or \"strain\"");
+  }
   m.thickness = r.number(r.key(j, "material", "thickness"), "material.thickness");
   density = r.number(r.key(j, "material", "density"), "material.density");
   try {
@@ -292,8 +292,8 @@ std::string model_json(const CalibratedModel& m) {
       << ",\n  \"units\": {\"length\": \"m\", \"stiffness\": \"N/m\", \"mass\": \"kg\", \"volume_stiffness\": \"J\"}"
       << ",\n  \"material\": {\"law\": " << str(std::string(material::law_name(mat.law)))
       << ", \"youngs_modulus\": " << num(mat.youngs_modulus) << ", \"poisson_ratio\": " << num(mat.poisson_ratio)
-      << ", \"plane\": " << str(plane_name(mat.plane)) << ", \"thickness\": " << num(mat.thickness)
-      << ", \"density\": " << num(m.density)
+      << ", \"plane\": " << str(std::string(material::plane_name(mat.plane)))
+      << ", \"thickness\": " << num(mat.thickness) << ", \"density\": " << num(m.density)
       << "},\n  \"element_kind\": " << str(std::string(mesh::element_kind_name(m.mesh.kind))) << ",\n";
   rows(out, "nodes", m.mesh.node_count(), [&](Eigen::Index i) { return vec_row(m.mesh.nodes, i); });
   rows(out, "elements", m.mesh.element_count(), [&](Eigen::Index i) { return int_row(m.mesh.elements, i); });

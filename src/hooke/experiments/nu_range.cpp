@@ -221,10 +221,7 @@ NuRangeReport reproduce_nu_range(const std::filesystem::path& mesh_dir, const Nu
     for (const auto& method : *list) calibrate::method_from_name(method);
   for (const auto& load : options.loads) load_kind_from_name(load);
   std::vector<material::Plane> planes;
-  for (const auto& p : options.planes) {
-    if (p != "stress" && p != "strain") throw InvalidArgument("unknown plane '" + p + "' (stress, strain)");
-    planes.push_back(p == "strain" ? material::Plane::kStrain : material::Plane::kStress);
-  }
+  for (const auto& p : options.planes) planes.push_back(material::plane_from_name(p));
   for (const auto& name : options.meshes) {
     const mesh::Mesh mesh = io::read_mesh(mesh_dir / (name + ".msh"));
     std::vector<Unit> units;

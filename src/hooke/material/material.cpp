@@ -45,6 +45,14 @@ Law law_from_name(std::string_view name) {
   throw InvalidArgument("unknown material law '" + std::string(name) + "' (use linear, stvk or neohookean)");
 }
 
+Plane plane_from_name(std::string_view name) {
+  if (name == "stress") return Plane::kStress;
+  if (name == "strain") return Plane::kStrain;
+  throw InvalidArgument("unknown plane '" + std::string(name) + "' (use stress or strain)");
+}
+
+std::string_view plane_name(Plane plane) { return plane == Plane::kStress ? "stress" : "strain"; }
+
 std::string_view law_name(Law law) {
   switch (law) {
     case Law::kLinear: return "linear";

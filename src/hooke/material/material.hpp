@@ -49,4 +49,9 @@ Law law_from_name(std::string_view name);
 /// Stable name of `law`.
 std::string_view law_name(Law law);
 
+/// Parses "stress", "strain". @throws InvalidArgument naming the valid names
+Plane plane_from_name(std::string_view name);
+/// Stable name of `plane`: "stress" or "strain".
+std::string_view plane_name(Plane plane);
+
 }  // namespace hooke::material
