@@ -40,10 +40,11 @@ struct Unit {
   std::string mesh_name;
   const mesh::Mesh* mesh = nullptr;
   material::Plane plane = material::Plane::kStress;
-  std::string plane_name;  // empty for tets
-  std::string table;       // calibrate::method_table_name
+  std::string table;  // calibrate::method_table_name
   const std::vector<std::string>* methods = nullptr;
-  std::string label() const { return plane_name.empty() ? mesh_name : mesh_name + " (plane " + plane_name + ")"; }
+  std::string label() const {
+    return table == "tet" ? mesh_name : mesh_name + " (plane " + std::string(material::plane_name(plane)) + ")";
+  }
 };
 
 material::Material material_at(const Unit& u, double nu) {
@@ -117,11 +118,18 @@ std::map<std::string, double> worst_of(const Cases& c) {
   return worst;
 }
 
-std::vector<std::string> tables_of(const NuRangeReport& r) {
+// The distinct values of `field` over the rows that pass `keep`, in the order the study ran them.
+template <typename Field, typename Keep>
+std::vector<std::string> distinct(const NuRangeReport& r, Field field, Keep keep) {
   std::vector<std::string> out;
   for (const auto& row : r.rows)
-    if (std::find(out.begin(), out.end(), row.table) == out.end()) out.push_back(row.table);
+    if (keep(row) && std::find(out.begin(), out.end(), field(row)) == out.end()) out.push_back(field(row));
   return out;
+}
+
+std::vector<std::string> tables_of(const NuRangeReport& r) {
+  return distinct(
+      r, [](const NuRangeRow& x) { return x.table; }, [](const NuRangeRow&) { return true; });
 }
 
 // Per table and nu: the method whose worst error over the cases (every regime) is smallest.
@@ -152,14 +160,12 @@ std::vector<calibrate::MeasuredError> method_table(const NuRangeReport& r) {
     for (double nu : r.options.poisson) {
       const Cases c = cases_of(r, table, nu, true);
       const std::map<std::string, double> worst = worst_of(c);
-      for (const auto& row : r.rows) {  // the study's method order
-        if (row.table != table || row.poisson != nu) continue;
-        const auto w = worst.find(row.method);
-        if (w == worst.end() || !std::isfinite(w->second)) continue;
-        const bool seen = std::any_of(out.begin(), out.end(), [&](const calibrate::MeasuredError& e) {
-          return e.table == table && e.poisson == nu && e.method == row.method;
-        });
-        if (!seen) out.push_back({table, nu, row.method, w->second, static_cast<int>(c.rows.size())});
+      const auto here = [&](const NuRangeRow& x) { return x.table == table && x.poisson == nu; };
+      for (const std::string& method : distinct(
+               r, [](const NuRangeRow& x) { return x.method; }, here)) {
+        const auto w = worst.find(method);
+        if (w != worst.end() && std::isfinite(w->second))
+          out.push_back({table, nu, method, w->second, static_cast<int>(c.rows.size())});
       }
     }
   return out;
@@ -167,17 +173,13 @@ std::vector<calibrate::MeasuredError> method_table(const NuRangeReport& r) {
 
 // The meshes (with their plane) in the order they ran, and the methods each ran.
 std::vector<std::string> labels_of(const NuRangeReport& r) {
-  std::vector<std::string> out;
-  for (const auto& row : r.rows)
-    if (std::find(out.begin(), out.end(), row.mesh) == out.end()) out.push_back(row.mesh);
-  return out;
+  return distinct(
+      r, [](const NuRangeRow& x) { return x.mesh; }, [](const NuRangeRow&) { return true; });
 }
 
 std::vector<std::string> methods_of(const NuRangeReport& r, const std::string& label) {
-  std::vector<std::string> out;
-  for (const auto& row : r.rows)
-    if (row.mesh == label && std::find(out.begin(), out.end(), row.method) == out.end()) out.push_back(row.method);
-  return out;
+  return distinct(
+      r, [](const NuRangeRow& x) { return x.method; }, [&](const NuRangeRow& x) { return x.mesh == label; });
 }
 
 std::vector<Figure> figures(const NuRangeReport& r) {
@@ -226,13 +228,12 @@ NuRangeReport reproduce_nu_range(const std::filesystem::path& mesh_dir, const Nu
     const mesh::Mesh mesh = io::read_mesh(mesh_dir / (name + ".msh"));
     std::vector<Unit> units;
     if (mesh.kind == mesh::ElementKind::kTet) {
-      units.push_back({name, &mesh, material::Plane::kStress, "", "tet", &options.methods});
+      units.push_back({name, &mesh, material::Plane::kStress, "tet", &options.methods});
     } else if (mesh.kind == mesh::ElementKind::kTriangle) {
-      for (std::size_t k = 0; k < planes.size(); ++k) {
+      for (const material::Plane plane : planes) {
         material::Material m;
-        m.plane = planes[k];
-        units.push_back({name, &mesh, planes[k], options.planes[k], calibrate::method_table_name(mesh.kind, m),
-                         &options.triangle_methods});
+        m.plane = plane;
+        units.push_back({name, &mesh, plane, calibrate::method_table_name(mesh.kind, m), &options.triangle_methods});
       }
     } else {
       throw InvalidArgument("nu-range: " + name + " is a " + std::string(mesh::element_kind_name(mesh.kind)) +

@@ -86,8 +86,8 @@ void validate_options(const IdentifyOptions& options);
 /// @param mesh   validated tet or triangle mesh, m
 /// @param cases  reference cases on mesh's nodes (validate_reference), at least one not held out; the rest state
 ///               (no load, no support) is added as a case with rest lengths
-/// @throws InvalidArgument for bad cases or a tolerance outside (0, 1); SolverFailure when an Eq. 1 start has no
-/// equilibrium
+/// @throws InvalidArgument for bad cases or options out of range (validate_options); SolverFailure when an Eq. 1
+/// start has no equilibrium
 Identification identify(const mesh::Mesh& mesh, const std::vector<ReferenceCase>& cases,
                         const IdentifyOptions& options = {});
 
