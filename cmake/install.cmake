@@ -16,9 +16,10 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/package/hookeConfig.cm
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/package/hookeConfigVersion.cmake
                                  COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/package/hookeConfig.cmake ${PROJECT_BINARY_DIR}/package/hookeConfigVersion.cmake
-              ${PROJECT_SOURCE_DIR}/cmake/deps/FindCHOLMOD.cmake DESTINATION ${HOOKE_CMAKE_DIR})
+              ${PROJECT_SOURCE_DIR}/cmake/deps/FindCHOLMOD.cmake ${PROJECT_SOURCE_DIR}/cmake/deps/FindNglib.cmake
+        DESTINATION ${HOOKE_CMAKE_DIR})
 
-# pkg-config: the static library needs CHOLMOD and OpenMP at every link, so they are in Libs, not Libs.private.
-set(HOOKE_PC_LIBS "${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY}")
+# pkg-config: the static library needs CHOLMOD, nglib (with its run path) and OpenMP at every link, so they are in Libs, not Libs.private.
+set(HOOKE_PC_LIBS "${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY} ${NGLIB_LIBRARY} ${NGLIB_MESH_LIBRARY} ${NGLIB_CORE_LIBRARY} -Wl,-rpath,${NGLIB_LIBRARY_DIR}")
 configure_file(${PROJECT_SOURCE_DIR}/cmake/package/hooke.pc.in ${PROJECT_BINARY_DIR}/package/hooke.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/package/hooke.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

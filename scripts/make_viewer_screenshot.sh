@@ -17,5 +17,5 @@ cat > "$script" <<'SCRIPT'
 3.0   quit
 SCRIPT
 xvfb-run -a -s "-screen 0 1024x768x24" "$hooke" view data/meshes/cylinder_hole.msh --young 14630 --poisson 0.45 \
-  --method lloyd-tet --integrator local-global --damping-mass 40 --script "$script" --size 1024,640
+  --method lloyd-tet --integrator local-global --damping-mass 40 --script "$script" --window-size 1024,640
 echo "wrote docs/images/viewer.png"

@@ -2,17 +2,19 @@
 # Installs every Debian package hooke needs. Idempotent: packages already present are skipped.
 # Usage: scripts/setup.sh [--meshing] [--bench]
 #   (default)  build, test and report dependencies, and the viewer's (GLFW, Dear ImGui, stb, Xvfb)
+#              and the real scanned surfaces the meshing tests use (CGAL's sample data in libcgal-demo, not linked)
 #   --meshing  also gmsh and tetgen, needed only to regenerate the committed meshes in data/meshes
 #   --bench    also Bullet, the benchmark peer of bench/
 set -euo pipefail
 
 core=(
   build-essential cmake ninja-build pkg-config clang-format clang-14 libclang-rt-14-dev
-  libeigen3-dev libsuitesparse-dev libopenblas0-pthread libtbb-dev
+  libeigen3-dev libsuitesparse-dev libopenblas0-pthread libtbb-dev libnglib-dev
   libcli11-dev libfmt-dev libspdlog-dev nlohmann-json3-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib python3-meshio pybind11-dev
   libglfw3-dev libimgui-dev libstb-dev xvfb xauth
+  libcgal-demo
 )
 extra=()
 for arg in "$@"; do

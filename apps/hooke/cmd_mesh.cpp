@@ -1,10 +1,11 @@
-// hooke mesh info MESH | hooke mesh convert IN OUT: inspect and convert meshes.
+// hooke mesh info MESH | convert IN OUT | tetrahedralize SURFACE -o VOLUME: inspect, convert and fill meshes.
 #include <algorithm>
 #include <cstdio>
 #include <hooke/core/error.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/io/mesh_io.hpp>
 #include <hooke/mesh/measure.hpp>
+#include <hooke/mesh/tetrahedralize.hpp>
 #include <hooke/mesh/topology.hpp>
 #include <hooke/mesh/validate.hpp>
 #include <map>
@@ -19,6 +20,7 @@ namespace {
 struct MeshOptions {
   std::string input, output, unit = "m", msh_version = "4.1";
   bool binary = false;
+  TetrahedralizeInput tetrahedralize;
 };
 
 int run_info(const MeshOptions& o) {
@@ -67,11 +69,37 @@ int run_convert(const MeshOptions& o) {
   return 0;
 }
 
+int run_tetrahedralize(const MeshOptions& o) {
+  io::ReadOptions ro;
+  ro.metres_per_unit = metres_per_unit(o.unit);
+  mesh::TetrahedralizeReport r;
+  const mesh::Mesh tets = mesh::tetrahedralize(io::read_mesh(o.input, ro),
+                                               tetrahedralize_options(o.tetrahedralize, ro.metres_per_unit), &r);
+  io::WriteOptions wo;
+  wo.binary = o.binary;
+  io::write_mesh(o.output, tets, wo);
+  std::printf("hooke mesh tetrahedralize: %s\n  mesher      %s, surface %s, size %.4g m\n", o.input.c_str(),
+              r.backend.c_str(), std::string(mesh::surface_meshing_name(r.options.surface)).c_str(),
+              r.options.max_size);
+  std::printf("  surface     %d nodes, %d triangles (%d reoriented), encloses %.6g m^3\n", r.surface_nodes,
+              r.surface_triangles, r.flipped_triangles, r.surface_volume);
+  std::printf("  tets        %d nodes, %d tets, volume %.6g m^3 (%+.3f %%)\n", r.nodes, r.tets, r.volume,
+              100.0 * r.volume_error);
+  std::printf("  fidelity    Hausdorff %.4g m (%.3f %% of the diagonal)%s\n", r.hausdorff, 100.0 * r.hausdorff_relative,
+              r.surface_preserved ? ", surface nodes preserved" : "");
+  std::printf(
+      "  quality     radius ratio min %.4f (tet %d), mean %.4f; dihedral %.2f .. %.2f deg; %d slivers (< %.2g)\n",
+      r.quality.min_radius_ratio, r.quality.worst_element, r.quality.mean_radius_ratio, r.quality.min_dihedral,
+      r.quality.max_dihedral, r.slivers, mesh::kSliverRadiusRatio);
+  std::printf("  time        %.2f s\n  wrote       %s\n", r.seconds, o.output.c_str());
+  return 0;
+}
+
 }  // namespace
 
 Action add_mesh_command(CLI::App& app) {
   auto o = std::make_shared<MeshOptions>();
-  CLI::App* cmd = app.add_subcommand("mesh", "Inspect and convert meshes");
+  CLI::App* cmd = app.add_subcommand("mesh", "Inspect, convert and tetrahedralize meshes");
   cmd->require_subcommand(1);
   CLI::App* info = cmd->add_subcommand("info", "Print counts, bounds, measure, quality and validation of a mesh");
   info->add_option("mesh", o->input, "Mesh file")->required();
@@ -82,7 +110,18 @@ Action add_mesh_command(CLI::App& app) {
   convert->add_option("--unit", o->unit, "Length unit of the input: m, cm, mm, um")->capture_default_str();
   convert->add_option("--msh-version", o->msh_version, "2.2 or 4.1")->capture_default_str();
   convert->add_flag("--binary", o->binary, "Binary .msh / .stl");
-  return [o, info] { return info->parsed() ? run_info(*o) : run_convert(*o); };
+  CLI::App* tet = cmd->add_subcommand(
+      "tetrahedralize", "Fill a closed triangle surface (a scan's STL/OFF) with tets (Netgen), with a quality report");
+  tet->add_option("surface", o->input, "Closed surface (.stl, .off, .obj, or any mesh file of surface triangles)")
+      ->required();
+  tet->add_option("-o,--output", o->output, "Tet mesh to write (.msh, .vtu, .node/.ele)")->required();
+  tet->add_option("--unit", o->unit, "Length unit of the surface file: m, cm, mm, um")->capture_default_str();
+  tet->add_flag("--binary", o->binary, "Binary .msh");
+  add_tetrahedralize_options(tet, o->tetrahedralize);
+  return [o, info, tet] {
+    if (info->parsed()) return run_info(*o);
+    return tet->parsed() ? run_tetrahedralize(*o) : run_convert(*o);
+  };
 }
 
 }  // namespace hooke::cli

@@ -5,6 +5,7 @@
 #include <functional>
 #include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/calibrate/surface_model.hpp>
+#include <hooke/mesh/tetrahedralize.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <string>
 #include <vector>
@@ -33,14 +34,27 @@ void add_surface_options(CLI::App* cmd, SurfaceInput& in);
 /// @throws InvalidArgument for an unknown name or a centre without three components
 calibrate::SurfaceOptions surface_options(const SurfaceInput& in);
 
+/// How a closed surface is made into tets (mesh::tetrahedralize): lengths in the mesh file's unit.
+struct TetrahedralizeInput {
+  double size = 0.0, max_volume = 0.0;  ///< --size (unit), --max-volume (unit^3); 0: not given
+  std::string surface_mesh = "keep";
+  mesh::TetrahedralizeOptions options;  ///< the numbers bound directly (quality, fineness, grading, steps)
+};
+/// Registers --size, --max-volume, --quality, --surface-mesh, --fineness, --grading and --optimisation-steps.
+void add_tetrahedralize_options(CLI::App* cmd, TetrahedralizeInput& in);
+/// The library options `in` selects, lengths converted to metres with `metres_per_unit`.
+/// @throws InvalidArgument for --size with --max-volume, or an unknown --surface-mesh
+mesh::TetrahedralizeOptions tetrahedralize_options(const TetrahedralizeInput& in, double metres_per_unit);
+
 /// Where a command's model comes from: a model file (--model), or a mesh calibrated by --method from E, nu.
 struct ModelSource {
   std::string mesh_path, unit = "m", model_path, method = "auto", law = "linear", plane = "stress";
   double young = std::nan(""), poisson = std::nan(""), thickness = 1e-3, density = 1000.0;  ///< NaN: not given
   SurfaceInput surface;
+  TetrahedralizeInput tetrahedralize;  ///< a closed surface given to a tet method
 };
-/// Registers [MESH], --model, --young, --poisson, --method, --unit, --thickness, --density, --plane and the
-/// surface options on `cmd`, bound to `in`.
+/// Registers [MESH], --model, --young, --poisson, --method, --unit, --thickness, --density, --plane, the
+/// surface model's options and the tetrahedralization options on `cmd`, bound to `in`.
 void add_model_source_options(CLI::App* cmd, ModelSource& in);
 /// The model `in` names: read from --model (checked against MESH when one is given too), or calibrated on MESH
 /// by the library's model factory.

@@ -51,8 +51,50 @@ calibrate::SurfaceOptions surface_options(const SurfaceInput& in) {
   return o;
 }
 
+void add_tetrahedralize_options(CLI::App* cmd, TetrahedralizeInput& in) {
+  const std::string group = "Closed surface to tets";
+  cmd->add_option("--size", in.size, "Largest tet edge inside the body, in the mesh unit (default: diagonal / 25)")
+      ->group(group);
+  cmd->add_option("--max-volume", in.max_volume,
+                  "Largest tet volume, in the mesh unit cubed (instead of --size: the edge of the regular tet)")
+      ->group(group);
+  cmd->add_option("--quality", in.options.min_radius_ratio,
+                  "Quality floor: refuse the mesh if a tet's radius ratio (1 regular, 0 flat) is below it; 0 reports")
+      ->capture_default_str()
+      ->group(group);
+  cmd->add_option("--surface-mesh", in.surface_mesh,
+                  "keep (the scan's triangles bound the tets: nodes and volume exact) or remesh (Netgen remeshes "
+                  "the surface at --size first)")
+      ->capture_default_str()
+      ->group(group);
+  cmd->add_option("--fineness", in.options.fineness, "Netgen fineness, 0 (coarse) .. 1 (fine)")
+      ->capture_default_str()
+      ->group(group);
+  cmd->add_option("--grading", in.options.grading, "Netgen grading, 0 (uniform) .. 1 (aggressive)")
+      ->capture_default_str()
+      ->group(group);
+  cmd->add_option("--optimisation-steps", in.options.optimisation_steps, "Netgen volume optimisation passes")
+      ->capture_default_str()
+      ->group(group);
+}
+
+mesh::TetrahedralizeOptions tetrahedralize_options(const TetrahedralizeInput& in, double metres_per_unit) {
+  mesh::TetrahedralizeOptions o = in.options;
+  o.surface = mesh::surface_meshing_from_name(in.surface_mesh);
+  if (in.size != 0.0 && in.max_volume != 0.0) throw InvalidArgument("give --size or --max-volume, not both");
+  if (in.size != 0.0) {
+    if (!(in.size > 0.0)) throw InvalidArgument("--size must be a length > 0");
+    o.max_size = in.size * metres_per_unit;
+  }
+  if (in.max_volume != 0.0)
+    o.max_size = mesh::edge_of_regular_tet(in.max_volume * metres_per_unit * metres_per_unit * metres_per_unit);
+  return o;
+}
+
 void add_model_source_options(CLI::App* cmd, ModelSource& in) {
-  cmd->add_option("mesh", in.mesh_path, "Mesh file (.msh, .vtu, .node/.ele, .obj, .off, .stl); optional with --model");
+  cmd->add_option("mesh", in.mesh_path,
+                  "Mesh file (.msh, .vtu, .node/.ele, .obj, .off, .stl; a closed surface is tetrahedralized for every "
+                  "method but surface); optional with --model");
   cmd->add_option("--model", in.model_path,
                   "Model file (.json, from hooke calibrate or written by hand) instead of "
                   "--method, --young and --poisson");
@@ -67,6 +109,7 @@ void add_model_source_options(CLI::App* cmd, ModelSource& in) {
   cmd->add_option("--density", in.density, "Density for the lumped masses, kg/m^3")->capture_default_str();
   cmd->add_option("--plane", in.plane, "2D models: stress or strain")->capture_default_str();
   add_surface_options(cmd, in.surface);
+  add_tetrahedralize_options(cmd, in.tetrahedralize);
 }
 
 calibrate::CalibratedModel load_model(const ModelSource& in) {
@@ -89,7 +132,9 @@ calibrate::CalibratedModel load_model(const ModelSource& in) {
   mo.method = in.method;
   mo.density = in.density;
   if (in.method == "surface" || in.method == "auto") mo.surface = surface_options(in.surface);
+  mo.tetrahedralize = tetrahedralize_options(in.tetrahedralize, ro.metres_per_unit);
   calibrate::CalibratedModel model = calibrate::calibrate_model(io::read_mesh(in.mesh_path, ro), mat, mo);
+  if (!model.meshing.empty()) std::fprintf(stderr, "hooke: tetrahedralized: %s\n", model.meshing.c_str());
   if (!model.choice.empty()) std::fprintf(stderr, "hooke: %s\n", model.choice.c_str());  // what --method auto picked
   return model;
 }

@@ -49,7 +49,7 @@ int run_view(ViewCli o) {
   interactive::color_field_from_name(o.colormap);
   v.colormap = o.colormap;
   if (o.size.size() != 2 || o.size[0] < 64 || o.size[1] < 64 || o.size[0] > 8192 || o.size[1] > 8192)
-    throw InvalidArgument("--size takes WIDTH,HEIGHT in pixels, each in [64, 8192]");
+    throw InvalidArgument("--window-size takes WIDTH,HEIGHT in pixels, each in [64, 8192]");
   v.width = o.size[0];
   v.height = o.size[1];
   v.realtime = !o.fast;
@@ -86,7 +86,7 @@ std::function<int()> add_view_options(CLI::App* cmd) {
   cmd->add_option("--save-model", o->run.save_model,
                   "Write the model being simulated at exit (.json, .vtu, .csv; what hooke calibrate writes)");
   cmd->add_option("--record", o->run.record, "Write the drawn frames as a ParaView series into this folder");
-  cmd->add_option("--size", o->size, "Window size WIDTH,HEIGHT, pixels")->delimiter(',')->capture_default_str();
+  cmd->add_option("--window-size", o->size, "Window size WIDTH,HEIGHT, pixels")->delimiter(',')->capture_default_str();
   cmd->add_flag("--no-panel", o->run.no_panel,
                 "The scene alone: no panel, force arrow or colour bar (e.g. for pixel tests)");
   cmd->add_option("--threads", o->run.threads, "OpenMP threads of the physics thread")->capture_default_str();

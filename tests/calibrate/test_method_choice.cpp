@@ -58,7 +58,10 @@ TEST(MethodChoice, TablesAreKeptApart) {
 }
 
 TEST(MethodChoice, SurfacesAndQuadsHaveTheirOwnReason) {
-  EXPECT_EQ(choose_method(ElementKind::kSurfaceTriangle, at(0.3)).method, "surface");
+  // A closed surface is tetrahedralized first: the tet table's pick, and the reason says so.
+  EXPECT_EQ(choose_method(ElementKind::kSurfaceTriangle, at(0.3)).method,
+            choose_method(ElementKind::kTet, at(0.3)).method);
+  EXPECT_NE(choose_method(ElementKind::kSurfaceTriangle, at(0.3)).reason.find("tetrahedralize"), std::string::npos);
   EXPECT_EQ(choose_method(ElementKind::kQuad, at(0.3)).method, "stiffness-fit");
 }
 

@@ -122,7 +122,7 @@ TEST(SurfaceModel, VolumePenaltyReducesTheVolumeDeviation) {
       p.external_force(3 * i + 2) = s.mesh.nodes(i, 2) > 0 ? -1e-3 : (s.mesh.nodes(i, 2) < 0 ? 1e-3 : 0.0);
     const solve::StaticResult r = solve::static_equilibrium(p);
     solve::require_converged(r.report);
-    return std::abs(surface::enclosed_volume(s.mesh.elements, r.positions) / s.discretisation.volume - 1.0);
+    return std::abs(mesh::enclosed_volume(s.mesh.elements, r.positions) / s.discretisation.volume - 1.0);
   };
   const double with = deviation(true), without = deviation(false);
   std::cout << "[volume] deviation with penalty " << with << ", without " << without << "\n";

@@ -2,8 +2,8 @@
 // mesh and after a local refinement; the per-node volumes are exact on a cube.
 #include <gtest/gtest.h>
 
+#include <hooke/mesh/closed_surface.hpp>
 #include <hooke/mesh/generators.hpp>
-#include <hooke/surface/closed_surface.hpp>
 #include <hooke/surface/discretisation.hpp>
 #include <hooke/surface/refine.hpp>
 
@@ -11,8 +11,8 @@ namespace hooke::surface {
 namespace {
 
 Discretisation of(mesh::Mesh& m) {
-  check_closed_surface(m);
-  return discretise(m, volume_centroid(m));
+  mesh::check_closed_surface(m);
+  return discretise(m, mesh::volume_centroid(m));
 }
 
 TEST(Discretisation, RadialVolumesCountEachConeThreeTimes) {
@@ -59,7 +59,7 @@ TEST(Discretisation, MassesSumToTheObjectMassAlsoAfterRefinement) {
 TEST(Refine, ClosesConformingly) {
   mesh::Mesh cube = mesh::cube_surface(4, 1.0);
   mesh::Mesh r = refine_near(cube, Vec3(0.5, 0.5, 1.0), 0.3);
-  EXPECT_NO_THROW(check_closed_surface(r));  // closed and manifold: no hanging nodes
+  EXPECT_NO_THROW(mesh::check_closed_surface(r));  // closed and manifold: no hanging nodes
   EXPECT_GT(r.element_count(), cube.element_count());
   EXPECT_EQ(refine_near(cube, Vec3(5, 5, 5), 0.1).element_count(), cube.element_count());
 }

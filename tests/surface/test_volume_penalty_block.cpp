@@ -3,8 +3,8 @@
 // to the node count and follow the interaction.
 #include <gtest/gtest.h>
 
+#include <hooke/mesh/closed_surface.hpp>
 #include <hooke/mesh/generators.hpp>
-#include <hooke/surface/closed_surface.hpp>
 #include <hooke/surface/discretisation.hpp>
 #include <hooke/surface/volume_penalty_block.hpp>
 #include <support/block_checks.hpp>
@@ -17,8 +17,8 @@ struct Sphere {
   Discretisation d;
   VecX rest;
   Sphere() {
-    check_closed_surface(mesh);
-    d = discretise(mesh, volume_centroid(mesh));
+    mesh::check_closed_surface(mesh);
+    d = discretise(mesh, mesh::volume_centroid(mesh));
     rest = Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size());
   }
   VolumePenaltyBlock block(VolumeForce f, double bulk = 5000.0) const {
@@ -44,7 +44,7 @@ TEST(VolumePenalty, EnergyReadingIsTheGradientOfTheBulkEnergy) {
   // Its Hessian: the exact one minus the dropped off-diagonal node blocks of (K/V0) g g^T.
   const MatX h_fd = test::fd_jacobian([&](const VecX& y) { return test::block_gradient(b, y); }, x, 1e-7);
   VecX dv = VecX::Zero(x.size());  // dV/dx = -g V0 / (K (V0 - V))
-  const double v = enclosed_volume(s.mesh.elements, x);
+  const double v = mesh::enclosed_volume(s.mesh.elements, x);
   dv = g * s.d.volume / (5000.0 * (v - s.d.volume));
   MatX dropped = (5000.0 / s.d.volume) * dv * dv.transpose();
   for (Eigen::Index i = 0; i < x.size() / 3; ++i) dropped.block(3 * i, 3 * i, 3, 3).setZero();

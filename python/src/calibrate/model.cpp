@@ -33,6 +33,8 @@ void define_model(py::module_& m) {
                               "terms, lumped masses (kg), the material, the method and its validity warnings.")
       .def_readonly("method", &CalibratedModel::method, "stable method name")
       .def_readonly("equation", &CalibratedModel::equation, "where the constants come from (paper, equation)")
+      .def_readonly("meshing", &CalibratedModel::meshing,
+                    "How the tets were made from a closed surface (mesher, options, counts, quality); empty otherwise")
       .def_readonly("choice", &CalibratedModel::choice,
                     "why method=\"auto\" chose this method (the measured errors compared); empty otherwise")
       .def_readonly("mesh", &CalibratedModel::mesh, py::return_value_policy::reference_internal, "the rest mesh (m)")

@@ -43,6 +43,7 @@ struct CalibratedModel {
   std::string method;                   ///< stable name: a calibration method, "surface", "fem", or what a file says
   std::string equation;                 ///< where its constants come from ("Lloyd et al. 2007, Eq. 12-13")
   std::string choice;                   ///< why `method` was chosen, for "auto" (calibrate::choose_method); else empty
+  std::string meshing;                  ///< how `mesh` was made from a closed surface (TetrahedralizeReport::summary)
   mesh::Mesh mesh;                      ///< rest nodes (m) and the elements the model stands for
   material::Material material;          ///< E (Pa), nu, thickness (m, 2D); the law is used by "fem" only
   double density = 1000.0;              ///< kg/m^3, what the masses were made from

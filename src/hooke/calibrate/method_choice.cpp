@@ -50,9 +50,13 @@ std::string method_table_name(mesh::ElementKind kind, const material::Material& 
 
 MethodChoice choose_method(mesh::ElementKind kind, const material::Material& material,
                            const std::vector<MeasuredError>& table) {
-  if (kind == mesh::ElementKind::kSurfaceTriangle)
-    return {"surface",
-            "auto: surface (a closed surface mesh: Arnab & Raja's surface model is hooke's only model of it)"};
+  if (kind == mesh::ElementKind::kSurfaceTriangle) {
+    MethodChoice tets = choose_method(mesh::ElementKind::kTet, material, table);
+    tets.reason +=
+        "; on the tets of the closed surface (mesh::tetrahedralize; --method surface gives Arnab & Raja's "
+        "surface model of it instead)";
+    return tets;
+  }
   if (kind == mesh::ElementKind::kQuad)
     return {"stiffness-fit",
             "auto: stiffness-fit (quad meshes are not in the measured table; the per-element fit of the FEM stiffness "

@@ -27,15 +27,16 @@ const std::vector<MeasuredError>& measured_errors();
 std::string method_table_name(mesh::ElementKind kind, const material::Material& material);
 
 struct MethodChoice {
-  std::string method;  ///< a calibration method name (or "surface")
+  std::string method;  ///< a calibration method name
   std::string reason;  ///< one line: what was compared and the errors measured
 };
 
 /// The method for `kind` and `material.poisson_ratio`: per method, the worst-case error interpolated linearly in nu
 /// between the table's two nearest values (the nearest one outside its range), then the smallest (ties: the method
-/// that is best at more of the table's nu). Surface-triangle meshes get "surface" (Arnab & Raja's model, the only one
-/// for a closed surface); quads, which the study does not measure, "stiffness-fit" (the per-element fit of the FEM
-/// stiffness, exact on the squares of Eq. 10-11), each with that reason.
+/// that is best at more of the table's nu). Surface-triangle meshes get the tet pick, since calibrate_model
+/// tetrahedralizes a closed surface first (--method surface, Arnab & Raja's model, stays explicit); quads, which the
+/// study does not measure, "stiffness-fit" (the per-element fit of the FEM stiffness, exact on the squares of
+/// Eq. 10-11), each with that reason.
 /// @throws InvalidArgument when `table` has no entry for the kind's table
 MethodChoice choose_method(mesh::ElementKind kind, const material::Material& material,
                            const std::vector<MeasuredError>& table = measured_errors());

@@ -93,6 +93,13 @@ CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material
   material::validate(material);
   if (!(options.density > 0.0) || !std::isfinite(options.density))
     throw InvalidArgument("the density must be a positive number of kg/m^3");
+  if (mesh.kind == mesh::ElementKind::kSurfaceTriangle && options.method != "surface") {
+    mesh::TetrahedralizeReport report;
+    const mesh::Mesh tets = mesh::tetrahedralize(mesh, options.tetrahedralize, &report);
+    CalibratedModel out = calibrate_model(tets, material, options);
+    out.meshing = report.summary();
+    return out;
+  }
   if (options.method == "auto") {
     const MethodChoice choice = choose_method(mesh.kind, material);
     log(LogLevel::kInfo, choice.reason);
@@ -111,8 +118,6 @@ CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material
       const Method method = method_from_name(options.method);
       out.warnings = validity_warnings(mesh, {material}, method);
       out.springs = calibrate(mesh, {material}, method);
-    } else if (mesh.kind == mesh::ElementKind::kSurfaceTriangle) {
-      throw InvalidArgument("the FEM model needs a triangle, quad or tet mesh, not a surface mesh");
     }
     out.masses = model::lumped_masses(mesh, options.density, material.thickness);
   }

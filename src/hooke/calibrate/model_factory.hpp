@@ -3,6 +3,7 @@
 /// from a model file, and never chooses term blocks itself (DESIGN.md).
 #include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/calibrate/surface_model.hpp>
+#include <hooke/mesh/tetrahedralize.hpp>
 #include <hooke/model/model.hpp>
 #include <memory>
 #include <string>
@@ -17,6 +18,8 @@ struct ModelOptions {
   std::string method = "auto";
   double density = 1000.0;  ///< kg/m^3 (> 0), for the lumped masses (and the surface model's object mass)
   SurfaceOptions surface;   ///< "surface" only; its density is replaced by `density`
+  /// How a closed surface mesh is made into tets for every method but "surface" (mesh::tetrahedralize).
+  mesh::TetrahedralizeOptions tetrahedralize;
 };
 
 /// Every name ModelOptions::method accepts: "auto", the calibration methods, then "surface" and "fem".
@@ -29,6 +32,8 @@ std::string method_equation(std::string_view method);
 /// Calibrates the model named by options.method on `mesh` for `material` (linear E, nu; t for 2D; the law
 /// only matters for "fem"): springs, volume and surface terms, lumped masses, the validity warnings. For "auto" the
 /// model's method is the one chosen and its `choice` says why (also logged at LogLevel::kInfo).
+/// A closed surface-triangle mesh given to any method but "surface" is tetrahedralized first with
+/// options.tetrahedralize, and the model's `meshing` says how (its mesh is then the tets).
 /// @param mesh  validated mesh, m; a closed surface-triangle mesh for "surface"
 /// @throws InvalidArgument for an unknown method or one that does not apply to the mesh, InvalidMaterial,
 ///   InvalidMesh (the surface model's checks)

@@ -288,6 +288,7 @@ std::string model_json(const CalibratedModel& m) {
       << ",\n  \"hooke_version\": " << str(std::string(kVersion)) << ",\n  \"method\": " << str(m.method)
       << ",\n  \"equation\": " << str(m.equation);
   if (!m.choice.empty()) out << ",\n  \"method_choice\": " << str(m.choice);
+  if (!m.meshing.empty()) out << ",\n  \"meshing\": " << str(m.meshing);
   out << ",\n  \"source_mesh\": " << str(m.mesh.source)
       << ",\n  \"units\": {\"length\": \"m\", \"stiffness\": \"N/m\", \"mass\": \"kg\", \"volume_stiffness\": \"J\"}"
       << ",\n  \"material\": {\"law\": " << str(std::string(material::law_name(mat.law)))
@@ -395,9 +396,9 @@ CalibratedModel model_from_json(const json& j, const std::string& source) {
     r.fail("schema_version",
            "is " + version.dump() + "; this hooke reads schema version " + std::to_string(kModelSchemaVersion));
   r.only_keys(j, "",
-              {"format", "schema_version", "hooke_version", "method", "equation", "method_choice", "source_mesh",
-               "units", "material", "element_kind", "nodes", "elements", "masses", "springs", "volume_terms", "surface",
-               "warnings", "certificate"});
+              {"format", "schema_version", "hooke_version", "method", "equation", "method_choice", "meshing",
+               "source_mesh", "units", "material", "element_kind", "nodes", "elements", "masses", "springs",
+               "volume_terms", "surface", "warnings", "certificate"});
   if (j.contains("units")) {
     const json& u = j["units"];
     r.only_keys(u, "units", {"length", "stiffness", "mass", "volume_stiffness"});
@@ -411,6 +412,7 @@ CalibratedModel model_from_json(const json& j, const std::string& source) {
   m.method = r.string(r.key(j, "", "method"), "method");
   m.equation = j.contains("equation") ? r.string(j["equation"], "equation") : std::string();
   m.choice = j.contains("method_choice") ? r.string(j["method_choice"], "method_choice") : std::string();
+  m.meshing = j.contains("meshing") ? r.string(j["meshing"], "meshing") : std::string();
   m.material = read_material(r, r.key(j, "", "material"), m.density);
   const mesh::ElementKind kind = read_kind(r, j);
   RowMatX nodes = read_points(r, j, "nodes", mesh::dimension(kind));

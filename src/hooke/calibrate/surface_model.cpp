@@ -62,8 +62,8 @@ SurfaceModel make_surface_model(mesh::Mesh mesh, const material::Material& mater
   if (material.law != material::Law::kLinear)
     throw InvalidArgument("the surface model is linear: its stiffnesses come from E and nu of a linear law");
   SurfaceModel out;
-  out.check = surface::check_closed_surface(mesh);
-  const Vec3 centre = o.centre ? *o.centre : surface::volume_centroid(mesh);
+  out.check = mesh::check_closed_surface(mesh);
+  const Vec3 centre = o.centre ? *o.centre : mesh::volume_centroid(mesh);
   surface::require_star_shaped(mesh, centre);
   out.discretisation = surface::discretise(mesh, centre);
   const surface::Discretisation& d = out.discretisation;

@@ -5,11 +5,12 @@
 /// from the radial discretisation (Fig. 5, 6).
 #include <hooke/calibrate/spring_model.hpp>
 #include <hooke/material/material.hpp>
+#include <hooke/mesh/closed_surface.hpp>
 #include <hooke/mesh/mesh.hpp>
 #include <hooke/model/model.hpp>
 #include <hooke/surface/anchor_block.hpp>
-#include <hooke/surface/closed_surface.hpp>
 #include <hooke/surface/discretisation.hpp>
+#include <hooke/surface/star_shape.hpp>
 #include <hooke/surface/volume_penalty_block.hpp>
 #include <memory>
 #include <optional>
@@ -53,8 +54,8 @@ inline constexpr double kDefaultThicknessRatio = 0.005;
 /// A built surface model with what the experiments and reports need.
 struct SurfaceModel {
   std::shared_ptr<model::Model> model;
-  mesh::Mesh mesh;                    ///< the checked, outward-oriented surface
-  surface::SurfaceCheckReport check;  ///< what check_closed_surface fixed
+  mesh::Mesh mesh;                 ///< the checked, outward-oriented surface
+  mesh::SurfaceCheckReport check;  ///< what check_closed_surface fixed
   surface::Discretisation discretisation;
   VecX masses;                                          ///< per DOF (3 per node), kg, summing to 3 M
   VecX k_normal, k_shear, k_bulk;                       ///< K_E,i, K_G,i, K_B,i as used, N/m
@@ -67,7 +68,7 @@ struct SurfaceModel {
 };
 
 /// Builds the surface model of `mesh` (a closed triangle surface: checked and oriented, see
-/// surface::check_closed_surface and surface::require_star_shaped) for `material` (E, nu; linear).
+/// mesh::check_closed_surface and surface::require_star_shaped) for `material` (E, nu; linear).
 /// @throws InvalidMesh for a surface the construction cannot use, InvalidMaterial for E, nu out of range
 SurfaceModel make_surface_model(mesh::Mesh mesh, const material::Material& material,
                                 const SurfaceOptions& options = {});

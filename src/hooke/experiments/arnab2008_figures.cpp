@@ -61,7 +61,7 @@ std::vector<VolumeDeviationRow> arnab2008_fig10(double nu) {
       const VecX x = pushed(s, 0, f);
       row.force.push_back(f);
       row.deviation_percent.push_back(
-          100.0 * std::abs(surface::enclosed_volume(s.mesh.elements, x) / s.discretisation.volume - 1.0));
+          100.0 * std::abs(mesh::enclosed_volume(s.mesh.elements, x) / s.discretisation.volume - 1.0));
     }
     for (double d : row.deviation_percent) row.average_percent += d / static_cast<double>(forces.size());
     rows.push_back(row);
@@ -204,7 +204,7 @@ std::vector<GravityRow> arnab2008_fig9(double nu, Figure* figure) {
     row.mean_sag_mm = 1e3 * sag.mean();
     row.sag_spread_percent = 100.0 * std::sqrt((sag.array() - sag.mean()).square().mean()) / sag.mean();
     row.volume_deviation_percent =
-        100.0 * std::abs(surface::enclosed_volume(s.mesh.elements, r.positions) / s.discretisation.volume - 1.0);
+        100.0 * std::abs(mesh::enclosed_volume(s.mesh.elements, r.positions) / s.discretisation.volume - 1.0);
     rows.push_back(row);
     if (figure)
       panels.push_back(shape_panel("scheme " + row.scheme + " (displacements x 20)", s.mesh, s.model->rest_positions(),
@@ -240,7 +240,7 @@ std::vector<WeightsRow> arnab2008_fig11(double nu, Figure* figure) {
       }
     row.equator_outward_mm /= std::max(equator, 1);
     row.volume_deviation_percent =
-        100.0 * std::abs(surface::enclosed_volume(s.mesh.elements, r.positions) / s.discretisation.volume - 1.0);
+        100.0 * std::abs(mesh::enclosed_volume(s.mesh.elements, r.positions) / s.discretisation.volume - 1.0);
     rows.push_back(row);
     if (figure)
       panels.push_back(shape_panel(row.weights + " weights", s.mesh, s.model->rest_positions(), r.positions, 1.0));

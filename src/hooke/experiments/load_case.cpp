@@ -37,14 +37,21 @@ LoadCase make_load_case(const mesh::Mesh& mesh, LoadKind kind, double traction_p
     case LoadKind::kShear: lc.direction(d == 2 ? 0 : 1) = 1.0; break;
   }
   const double top = mesh.nodes.col(up).maxCoeff(), bottom = mesh.nodes.col(up).minCoeff();
-  const double tol = 1e-6 * mesh::bounding_box_diagonal(mesh);
+  const RowMatXi facets = mesh::boundary_facets(mesh);
+  const VecX measure = mesh::facet_measures(mesh, facets);
   lc.height = top - bottom;
+  double tol = 1e-6 * mesh::bounding_box_diagonal(mesh);
+  bool flat_top = false;
+  for (Eigen::Index f = 0; f < facets.rows() && !flat_top; ++f) {
+    bool on_top = true;
+    for (Eigen::Index k = 0; k < facets.cols(); ++k) on_top = on_top && mesh.nodes(facets(f, k), up) >= top - tol;
+    flat_top = on_top;
+  }
+  if (!flat_top) tol = kEndBand * lc.height;  // a curved body: its end bands
   for (int i = 0; i < mesh.node_count(); ++i) {
     if (mesh.nodes(i, up) <= bottom + tol) lc.fixed_nodes.push_back(i);
     if (mesh.nodes(i, up) >= top - tol) lc.top_nodes.push_back(i);
   }
-  const RowMatXi facets = mesh::boundary_facets(mesh);
-  const VecX measure = mesh::facet_measures(mesh, facets);
   lc.nodal_forces = VecX::Zero(d * mesh.node_count());
   int loaded = 0;
   for (Eigen::Index f = 0; f < facets.rows(); ++f) {

@@ -1,6 +1,6 @@
 #include <hooke/core/error.hpp>
+#include <hooke/mesh/closed_surface.hpp>
 #include <hooke/mesh/measure.hpp>
-#include <hooke/surface/closed_surface.hpp>
 #include <hooke/surface/discretisation.hpp>
 
 namespace hooke::surface {
@@ -21,7 +21,7 @@ Discretisation discretise(const mesh::Mesh& m, const Vec3& centre) {
   Discretisation d;
   d.centre = centre;
   const VecX x = Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size());
-  d.volume = enclosed_volume(m.elements, x);
+  d.volume = mesh::enclosed_volume(m.elements, x);
   d.normals = node_normals(m.elements, x);
   const int n = m.node_count();
   d.radial_length.resize(n);

@@ -2,7 +2,7 @@
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/core/name_table.hpp>
-#include <hooke/surface/closed_surface.hpp>
+#include <hooke/mesh/closed_surface.hpp>
 #include <hooke/surface/volume_penalty_block.hpp>
 #include <numbers>
 #include <vector>
@@ -116,7 +116,7 @@ VecX VolumePenaltyBlock::weights(const Eigen::Ref<const VecX>& x, const Interact
 }
 
 double VolumePenaltyBlock::energy(const Eigen::Ref<const VecX>& x) const {
-  const double dv = enclosed_volume(m_triangles, x) - m_rest_volume;
+  const double dv = mesh::enclosed_volume(m_triangles, x) - m_rest_volume;
   return 0.5 * m_bulk_modulus * dv * dv / m_rest_volume;
 }
 

@@ -1,15 +1,15 @@
-// Closed-surface checks of the surface model: holes, non-manifold edges and nodes, orientation repair,
-// several pieces, and the star-shape condition of the radial construction, each named in the error.
+// Closed-surface checks: holes, non-manifold edges and nodes, orientation repair and several pieces, each named in
+// the error; the enclosed volume and its centroid.
 #include <gtest/gtest.h>
 
 #include <hooke/core/error.hpp>
+#include <hooke/mesh/closed_surface.hpp>
 #include <hooke/mesh/generators.hpp>
-#include <hooke/surface/closed_surface.hpp>
 
-namespace hooke::surface {
+namespace hooke::mesh {
 namespace {
 
-std::string error_of(mesh::Mesh m) {
+std::string error_of(Mesh m) {
   try {
     check_closed_surface(m);
   } catch (const InvalidMesh& e) {
@@ -19,7 +19,7 @@ std::string error_of(mesh::Mesh m) {
 }
 
 TEST(ClosedSurface, CubeIsClosedWithItsVolumeAndCentroid) {
-  mesh::Mesh m = mesh::cube_surface(4, 0.2);
+  Mesh m = cube_surface(4, 0.2);
   const SurfaceCheckReport r = check_closed_surface(m);
   EXPECT_EQ(r.flipped_triangles, 0);
   EXPECT_FALSE(r.reversed_all);
@@ -28,8 +28,8 @@ TEST(ClosedSurface, CubeIsClosedWithItsVolumeAndCentroid) {
 }
 
 TEST(ClosedSurface, FlippedTrianglesAndInwardSurfacesAreRepaired) {
-  mesh::Mesh m = mesh::cube_surface(3, 1.0);
-  const mesh::Mesh original = m;
+  Mesh m = cube_surface(3, 1.0);
+  const Mesh original = m;
   std::swap(m.elements(5, 1), m.elements(5, 2));
   std::swap(m.elements(17, 1), m.elements(17, 2));
   const SurfaceCheckReport r = check_closed_surface(m);
@@ -42,49 +42,25 @@ TEST(ClosedSurface, FlippedTrianglesAndInwardSurfacesAreRepaired) {
 }
 
 TEST(ClosedSurface, NamesHolesNonManifoldEdgesAndPieces) {
-  mesh::Mesh m = mesh::cube_surface(2, 1.0);
-  mesh::Mesh hole = m;
+  Mesh m = cube_surface(2, 1.0);
+  Mesh hole = m;
   hole.elements.conservativeResize(m.element_count() - 1, 3);
   EXPECT_NE(error_of(hole).find("hole"), std::string::npos) << error_of(hole);
-  mesh::Mesh tripled = m;
+  Mesh tripled = m;
   tripled.elements.conservativeResize(m.element_count() + 1, 3);
   tripled.elements.row(m.element_count()) << m.elements(0, 0), m.elements(0, 1), m.elements(3, 2);
   EXPECT_NE(error_of(tripled).find("three or more triangles"), std::string::npos) << error_of(tripled);
   // Two cubes side by side: two pieces.
-  mesh::Mesh two = m;
+  Mesh two = m;
   const int n = m.node_count();
   two.nodes.conservativeResize(2 * n, 3);
   two.nodes.bottomRows(n) = m.nodes.array() + 3.0;
   two.elements.conservativeResize(2 * m.element_count(), 3);
   two.elements.bottomRows(m.element_count()) = m.elements.array() + n;
   EXPECT_NE(error_of(two).find("several separate pieces"), std::string::npos) << error_of(two);
-  mesh::Mesh tets = mesh::tet_box(1, 1, 1, 1, 1, 1);
+  Mesh tets = tet_box(1, 1, 1, 1, 1, 1);
   EXPECT_NE(error_of(tets).find("closed triangle surface"), std::string::npos);
 }
 
-TEST(ClosedSurface, RadialConstructionNeedsAStarShapedSurface) {
-  mesh::Mesh m = mesh::cube_surface(4, 1.0);
-  check_closed_surface(m);
-  EXPECT_NO_THROW(require_star_shaped(m, Vec3(0.5, 0.5, 0.5)));
-  EXPECT_NO_THROW(require_star_shaped(m, Vec3(0.2, 0.7, 0.4)));  // any interior point of a convex body
-  try {
-    require_star_shaped(m, Vec3(1.5, 0.5, 0.5));  // outside
-    FAIL() << "no error";
-  } catch (const InvalidMesh& e) {
-    EXPECT_NE(std::string(e.what()).find("not star-shaped"), std::string::npos) << e.what();
-    EXPECT_GE(e.element(), 0);
-  }
-  // Push one face's centre node deep inside: the surface is no longer star-shaped from the centre.
-  mesh::Mesh dent = m;
-  int top = -1;
-  for (int i = 0; i < dent.node_count(); ++i)
-    if (std::abs(dent.nodes(i, 2) - 1.0) < 1e-12 && std::abs(dent.nodes(i, 0) - 0.5) < 1e-12 &&
-        std::abs(dent.nodes(i, 1) - 0.5) < 1e-12)
-      top = i;
-  ASSERT_GE(top, 0);
-  dent.nodes(top, 2) = 0.3;
-  EXPECT_THROW(require_star_shaped(dent, Vec3(0.5, 0.5, 0.5)), InvalidMesh);
-}
-
 }  // namespace
-}  // namespace hooke::surface
+}  // namespace hooke::mesh

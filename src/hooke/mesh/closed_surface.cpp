@@ -2,24 +2,15 @@
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
+#include <hooke/mesh/closed_surface.hpp>
 #include <hooke/mesh/measure.hpp>
-#include <hooke/surface/closed_surface.hpp>
-#include <hooke/surface/discretisation.hpp>
-#include <sstream>
 #include <unordered_map>
 #include <vector>
 
-namespace hooke::surface {
+namespace hooke::mesh {
 namespace {
 
-std::string where(const mesh::Mesh& m) { return m.source.empty() ? std::string() : " of " + m.source; }
-
-std::string point(const Vec3& p) {
-  std::ostringstream s;
-  s.precision(6);
-  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
-  return s.str();
-}
+std::string where(const Mesh& m) { return m.source.empty() ? std::string() : " of " + m.source; }
 
 std::uint64_t edge_key(int a, int b) {
   const auto lo = static_cast<std::uint64_t>(std::min(a, b)), hi = static_cast<std::uint64_t>(std::max(a, b));
@@ -27,7 +18,7 @@ std::uint64_t edge_key(int a, int b) {
 }
 
 // The two triangles of every undirected edge, or an InvalidMesh naming an open or over-shared edge.
-std::unordered_map<std::uint64_t, std::array<int, 2>> edge_triangles(const mesh::Mesh& m) {
+std::unordered_map<std::uint64_t, std::array<int, 2>> edge_triangles(const Mesh& m) {
   std::unordered_map<std::uint64_t, std::array<int, 2>> edges;
   std::unordered_map<std::uint64_t, int> count;
   edges.reserve(static_cast<size_t>(3 * m.element_count()));
@@ -56,7 +47,7 @@ std::unordered_map<std::uint64_t, std::array<int, 2>> edge_triangles(const mesh:
 }
 
 // Each node's triangles must form one closed fan: the edges opposite the node form a single cycle.
-void require_single_fans(const mesh::Mesh& m) {
+void require_single_fans(const Mesh& m) {
   std::vector<std::vector<std::array<int, 2>>> link(static_cast<size_t>(m.node_count()));
   for (int t = 0; t < m.element_count(); ++t)
     for (int k = 0; k < 3; ++k)
@@ -65,7 +56,8 @@ void require_single_fans(const mesh::Mesh& m) {
     const auto& edges = link[static_cast<size_t>(v)];
     if (edges.empty())
       throw InvalidMesh("node " + std::to_string(v) + where(m) +
-                        " belongs to no triangle: remove it (the surface model gives every node a mass and a normal)");
+                        " belongs to no triangle: remove it (every node of a surface needs a normal, and a mass in the "
+                        "surface model)");
     // Walk the cycle from the first link edge; it must visit every link edge.
     std::vector<char> used(edges.size(), 0);
     used[0] = 1;
@@ -91,11 +83,10 @@ void require_single_fans(const mesh::Mesh& m) {
 
 }  // namespace
 
-SurfaceCheckReport check_closed_surface(mesh::Mesh& m) {
-  if (m.kind != mesh::ElementKind::kSurfaceTriangle)
-    throw InvalidMesh("the surface model needs a closed triangle surface; " +
-                      (m.source.empty() ? "the mesh" : m.source) + " holds " +
-                      std::string(mesh::element_kind_name(m.kind)) + " elements");
+SurfaceCheckReport check_closed_surface(Mesh& m) {
+  if (m.kind != ElementKind::kSurfaceTriangle)
+    throw InvalidMesh("a closed triangle surface is needed; " + (m.source.empty() ? "the mesh" : m.source) + " holds " +
+                      std::string(element_kind_name(m.kind)) + " elements");
   if (m.element_count() < 4) throw InvalidMesh("the surface" + where(m) + " has fewer than 4 triangles: not closed");
   const auto edges = edge_triangles(m);
   require_single_fans(m);
@@ -135,12 +126,12 @@ SurfaceCheckReport check_closed_surface(mesh::Mesh& m) {
   if (queue.size() != static_cast<size_t>(m.element_count())) {
     const auto first = std::find(seen.begin(), seen.end(), 0) - seen.begin();
     throw InvalidMesh("the surface" + where(m) + " has several separate pieces (triangle " + std::to_string(first) +
-                          " is not connected to triangle 0); the surface model needs one closed body",
+                          " is not connected to triangle 0); one closed body is needed",
                       first);
   }
   const VecX x = Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size());
   double volume = enclosed_volume(m.elements, x);
-  const double size = mesh::bounding_box_diagonal(m);
+  const double size = bounding_box_diagonal(m);
   if (!(std::abs(volume) > 1e-12 * size * size * size))
     throw InvalidMesh("the surface" + where(m) + " encloses no volume (" + std::to_string(volume) + " m^3)");
   if (volume < 0.0) {
@@ -166,7 +157,7 @@ double enclosed_volume(const RowMatXi& triangles, const Eigen::Ref<const VecX>& 
   return v;
 }
 
-Vec3 volume_centroid(const mesh::Mesh& m) {
+Vec3 volume_centroid(const Mesh& m) {
   // Centroid of the signed tets (origin, a, b, c) weighted by their volumes; shifted to the bounding-box
   // centre first so that round-off does not grow with the distance to the origin.
   const Vec3 shift = 0.5 * (m.nodes.colwise().minCoeff() + m.nodes.colwise().maxCoeff()).transpose();
@@ -183,23 +174,4 @@ Vec3 volume_centroid(const mesh::Mesh& m) {
   return shift + moment / volume;
 }
 
-void require_star_shaped(const mesh::Mesh& m, const Vec3& centre) {
-  const double size = mesh::bounding_box_diagonal(m);
-  for (int t = 0; t < m.element_count(); ++t) {
-    const Vec3 a = m.nodes.row(m.elements(t, 0)).transpose(), b = m.nodes.row(m.elements(t, 1)).transpose(),
-               c = m.nodes.row(m.elements(t, 2)).transpose();
-    if (!(mesh::signed_volume(centre, a, b, c) > 1e-14 * size * size * size))
-      throw InvalidMesh(mesh::element_label(m, t) + " does not face away from the centre " + point(centre) +
-                            ": the surface is not star-shaped from it, so radial links would cross the surface "
-                            "(give another centre, or use a volume mesh)",
-                        t);
-  }
-  const VecX x = Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size());
-  const RowMatX normals = node_normals(m.elements, x);
-  for (int i = 0; i < m.node_count(); ++i)
-    if (!((m.nodes.row(i) - centre.transpose()).dot(normals.row(i)) > 1e-9 * size))
-      throw InvalidMesh("node " + std::to_string(i) + where(m) + " has the centre " + point(centre) +
-                        " in front of its tangent plane: its inner spring axis (Fig. 6) would point out of the body");
-}
-
-}  // namespace hooke::surface
+}  // namespace hooke::mesh

@@ -1,0 +1,82 @@
+#pragma once
+/// From a closed triangle surface (a scan's STL/OFF) to a tet mesh of the solid it bounds: the surface checks
+/// before, Netgen's mesher (nglib, LGPL-2.1, linked dynamically, so hooke stays MIT), the quality and fidelity
+/// report after (docs/meshing.md).
+#include <hooke/mesh/mesh.hpp>
+#include <hooke/mesh/tet_quality.hpp>
+#include <string>
+#include <string_view>
+
+namespace hooke::mesh {
+
+/// What happens to the input surface.
+enum class SurfaceMeshing {
+  kKeep,    ///< the input triangles are the boundary of the tet mesh: nodes and enclosed volume preserved exactly,
+            ///< the element count and shape near the surface follow the scan's triangles (the default: it meshes
+            ///< every closed, non-crossing scan tried, docs/meshing.md)
+  kRemesh,  ///< Netgen remeshes the surface at the target size first (its STL mesher: feature edges, curvature):
+            ///< fewer elements; the nodes move onto a new surface, the Hausdorff distance says how far, and convex
+            ///< parts lose volume as the chords' sag (size^2 / 8 R); it fails on some scans (boundary overlap)
+};
+/// "remesh" or "keep". @throws InvalidArgument naming the valid values
+SurfaceMeshing surface_meshing_from_name(std::string_view name);
+std::string_view surface_meshing_name(SurfaceMeshing meshing);
+
+struct TetrahedralizeOptions {
+  /// Largest tet edge, m; 0: the bounding-box diagonal / 25. (--max-volume V is the edge of the regular tet of
+  /// volume V: (6 sqrt(2) V)^(1/3).) Inside the body; at a kept surface the scan's triangles set the size.
+  double max_size = 0.0;
+  SurfaceMeshing surface = SurfaceMeshing::kKeep;
+  double fineness = 0.5;       ///< Netgen: 0 (coarse) .. 1 (fine): refinement at curvature and small features
+  double grading = 0.3;        ///< Netgen: 0 (uniform) .. 1 (aggressive grading from small to large elements)
+  int optimisation_steps = 3;  ///< Netgen: volume mesh optimisation passes
+  /// Quality floor: a tet with radius_ratio below it fails the meshing, naming it; 0 (the default) reports only.
+  /// Off by default because a kept scan bounds the quality of the tets on its thin triangles, and Netgen leaves a
+  /// few interior slivers that its optimisation does not remove (CGAL's femur: 32 of 60 783 tets below 0.01, the
+  /// worst 0.0002 on a scan triangle of quality 0.012); the model built on the mesh is then checked by what it does
+  /// (certificate, inversion guard), docs/meshing.md.
+  double min_radius_ratio = 0.0;
+  double max_volume_error = 0.01;  ///< |V_tets / V_surface - 1| above this fails the meshing
+};
+
+/// Below this radius ratio a tet is called a sliver in reports and warnings.
+inline constexpr double kSliverRadiusRatio = 0.01;
+
+/// What the meshing did and how good the result is.
+struct TetrahedralizeReport {
+  std::string backend;            ///< the mesher and its version, "netgen 6.2 (nglib)"
+  TetrahedralizeOptions options;  ///< as used (max_size resolved, m)
+  int surface_nodes = 0;          ///< input surface
+  int surface_triangles = 0;
+  int flipped_triangles = 0;    ///< input triangles reoriented by check_closed_surface
+  double surface_volume = 0.0;  ///< enclosed by the input surface, m^3
+  int nodes = 0;                ///< output tet mesh
+  int tets = 0;
+  double volume = 0.0;              ///< of the tets, m^3
+  double volume_error = 0.0;        ///< volume / surface_volume - 1
+  bool surface_preserved = false;   ///< the input nodes are the first surface_nodes nodes, unmoved
+  double hausdorff = 0.0;           ///< node_hausdorff_distance of the input and output surfaces, m
+  double hausdorff_relative = 0.0;  ///< hausdorff / the bounding-box diagonal
+  TetQualityReport quality;
+  int slivers = 0;       ///< tets with radius ratio below kSliverRadiusRatio (a warning names them)
+  double seconds = 0.0;  ///< wall time of the meshing (checks and report included)
+  /// One line for logs and model files: backend, options, counts, volume error, Hausdorff, quality, time.
+  std::string summary() const;
+};
+
+/// The tet mesh of the solid bounded by `surface` (kind kSurfaceTriangle, m), validated, tets positively oriented.
+/// Before meshing: check_closed_surface (closed, manifold, oriented, one piece) and require_no_self_intersection;
+/// a warning when the surface is larger than 10 m across (a file in millimetres read as metres: give --unit mm).
+/// After: the volume within options.max_volume_error of the enclosed volume, every tet's radius ratio above
+/// options.min_radius_ratio, the quality and Hausdorff distance in `report`. Netgen's own messages are silenced;
+/// calls are serialised (Netgen keeps global state).
+/// @throws InvalidMesh naming the element of the input surface that fails a check, or the mesher's failure and
+///   its message, or the tet below the quality floor or the volume off by more than allowed, with what to change;
+///   InvalidArgument for options out of range
+Mesh tetrahedralize(Mesh surface, const TetrahedralizeOptions& options = {}, TetrahedralizeReport* report = nullptr);
+
+/// The edge length (m) of the regular tet of volume `volume` (m^3): what --max-volume sets max_size to.
+/// @pre volume > 0
+double edge_of_regular_tet(double volume);
+
+}  // namespace hooke::mesh
