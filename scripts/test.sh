@@ -24,8 +24,9 @@ bash scripts/check_install.sh build/ci   # examples/ against the installed packa
 if [ "${1:-}" != "--no-sanitizers" ]; then
   cmake --preset asan > /dev/null
   cmake --build --preset asan -j "$jobs" --target hooke_tests hooke_interactive_tests
-  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs" -L "unit|interactive" \
-    -E "BenchmarkCylinderUnderGravity|AnyNuAgainstFem"
+  ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp" UBSAN_OPTIONS=print_stacktrace=1 \
+    ctest --preset asan -j "$jobs" -L "unit|interactive" \
+    -E "BenchmarkCylinderUnderGravity|AnyNuAgainstFem|ScanToModel"
   # One OpenMP thread, and CHOLMOD's own libgomp threads suppressed (tests/tsan.supp): libgomp is not
   # instrumented, so its barriers would read as races. The single-threaded 300-step drag only in the passes above.
   cmake --preset tsan > /dev/null

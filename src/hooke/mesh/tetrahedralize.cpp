@@ -10,6 +10,7 @@
 #include <hooke/mesh/tetrahedralize.hpp>
 #include <hooke/mesh/topology.hpp>
 #include <hooke/mesh/validate.hpp>
+#include <iostream>
 #include <mutex>
 #include <ostream>
 #include <string>
@@ -75,14 +76,21 @@ class NetgenSession {
     netgen::mycout = &discard;
     ngcore::testout = &discard;
     m_mesh = nglib::Ng_NewMesh();
+    // Netgen's optimiser also writes to std::cerr directly ("BFGS update error2"): discarded while it runs.
+    m_cerr = std::cerr.rdbuf(nullptr);
   }
-  ~NetgenSession() { nglib::Ng_DeleteMesh(m_mesh); }
+  ~NetgenSession() {
+    nglib::Ng_DeleteMesh(m_mesh);
+    std::cerr.rdbuf(m_cerr);
+    std::cerr.clear();
+  }
   NetgenSession(const NetgenSession&) = delete;
   NetgenSession& operator=(const NetgenSession&) = delete;
   nglib::Ng_Mesh* mesh() { return m_mesh; }
 
  private:
   nglib::Ng_Mesh* m_mesh;
+  std::streambuf* m_cerr;
 };
 
 std::mutex& netgen_mutex() {
