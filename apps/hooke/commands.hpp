@@ -43,7 +43,7 @@ struct TetrahedralizeInput {
 /// Registers --size, --max-volume, --quality, --surface-mesh, --fineness, --grading and --optimisation-steps.
 void add_tetrahedralize_options(CLI::App* cmd, TetrahedralizeInput& in);
 /// The library options `in` selects, lengths converted to metres with `metres_per_unit`.
-/// @throws InvalidArgument for --size with --max-volume, or an unknown --surface-mesh
+/// @throws InvalidArgument for --size with --max-volume (mesh::set_mesh_size), or an unknown --surface-mesh
 mesh::TetrahedralizeOptions tetrahedralize_options(const TetrahedralizeInput& in, double metres_per_unit);
 
 /// Where a command's model comes from: a model file (--model), or a mesh calibrated by --method from E, nu.

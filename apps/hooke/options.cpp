@@ -81,13 +81,8 @@ void add_tetrahedralize_options(CLI::App* cmd, TetrahedralizeInput& in) {
 mesh::TetrahedralizeOptions tetrahedralize_options(const TetrahedralizeInput& in, double metres_per_unit) {
   mesh::TetrahedralizeOptions o = in.options;
   o.surface = mesh::surface_meshing_from_name(in.surface_mesh);
-  if (in.size != 0.0 && in.max_volume != 0.0) throw InvalidArgument("give --size or --max-volume, not both");
-  if (in.size != 0.0) {
-    if (!(in.size > 0.0)) throw InvalidArgument("--size must be a length > 0");
-    o.max_size = in.size * metres_per_unit;
-  }
-  if (in.max_volume != 0.0)
-    o.max_size = mesh::edge_of_regular_tet(in.max_volume * metres_per_unit * metres_per_unit * metres_per_unit);
+  mesh::set_mesh_size(o, in.size * metres_per_unit,
+                      in.max_volume * metres_per_unit * metres_per_unit * metres_per_unit);
   return o;
 }
 

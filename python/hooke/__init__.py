@@ -62,14 +62,35 @@ class ValidityWarning(UserWarning):
     from nu = 1/4)."""
 
 
-def calibrate(mesh, material, method="auto", density=1000.0):
+def tetrahedralize(surface, **options):
+    """Fills the closed triangle surface `surface` (hooke.Mesh, m) with tets (Netgen), after checking it is closed,
+    manifold and not crossing itself (errors name the element). docs/meshing.md.
+
+    options (keywords; the library's defaults otherwise):
+    size, max_volume   largest tet edge (m) or volume (m^3) inside the body; default: the bounding-box diagonal / 25
+    surface_mesh       "keep" (default: the surface's triangles bound the tets, nodes exact) or "remesh"
+    quality            refuse the mesh if a tet's radius ratio is below this (default 0: report only)
+    fineness, grading, optimisation_steps   Netgen's parameters
+
+    Returns (mesh, report): the tet hooke.Mesh and a dict (nodes, tets, volume_error, hausdorff, min_radius_ratio,
+    min_dihedral, slivers, seconds, summary, ...).
+    """
+    if not isinstance(surface, Mesh):
+        raise TypeError("tetrahedralize: surface must be a hooke.Mesh")
+    return _hooke._tetrahedralize(surface, _hooke._tetrahedralize_options(**options))
+
+
+def calibrate(mesh, material, method="auto", density=1000.0, tetrahedralize=None):
     """Calibrates the model `method` (one of hooke.methods()) on `mesh` for `material`. "auto" (the default) picks
     the method of smallest measured error for the mesh's element kind and nu; the model's .method is the one picked
-    and .choice says why.
+    and .choice says why. A closed surface is tetrahedralized first for every method but "surface" (.meshing says
+    how).
 
-    mesh      hooke.Mesh, coordinates in m (a closed surface-triangle mesh for method="surface")
-    material  hooke.Material (E in Pa, nu; thickness in m for 2D meshes)
-    density   kg/m^3, for the lumped masses
+    mesh            hooke.Mesh, coordinates in m (a closed surface-triangle mesh for method="surface")
+    material        hooke.Material (E in Pa, nu; thickness in m for 2D meshes)
+    density         kg/m^3, for the lumped masses
+    tetrahedralize  dict of hooke.tetrahedralize's options (size, max_volume, surface_mesh, quality, ...), for a
+                    closed surface
 
     Returns a hooke.Model: .pairs (S, 2), .stiffness (S,) N/m, .rest_length (S,) m, .volume_tets (T, 4),
     .volume_stiffness (T,) J, .rest_volume (T,) m^3, .masses (dim * N,) kg. The method's validity warnings are
@@ -79,7 +100,8 @@ def calibrate(mesh, material, method="auto", density=1000.0):
         raise TypeError("calibrate: mesh must be a hooke.Mesh")
     if not isinstance(material, Material):
         raise TypeError("calibrate: material must be a hooke.Material")
-    model = _hooke._calibrate(mesh, material, method, float(density))
+    options = _hooke._tetrahedralize_options(**(tetrahedralize or {}))
+    model = _hooke._calibrate(mesh, material, method, float(density), options)
     for w in model.warnings:
         _warnings.warn(w, ValidityWarning, stacklevel=2)
     return model

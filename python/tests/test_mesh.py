@@ -68,3 +68,31 @@ def test_meshio_round_trip():
     assert isinstance(mm, meshio.Mesh)
     back = hooke.mesh_from_meshio(mm)
     np.testing.assert_array_equal(back.elements, m.elements)
+
+
+def test_tetrahedralize_a_closed_surface_and_calibrate_on_it():
+    cube = hooke.cube_surface(4, 0.1)
+    tets, report = hooke.tetrahedralize(cube)
+    assert tets.kind == "tet"
+    assert report["surface_preserved"]
+    assert report["tets"] == len(tets.elements)
+    assert abs(report["volume"] - 1e-3) < 1e-15
+    assert report["min_radius_ratio"] > 0.0 and 0.0 < report["min_dihedral"] < 90.0
+    # calibrate() tetrahedralizes a surface for a tet method, with the same options
+    model = hooke.calibrate(cube, hooke.Material(1e5, 0.45), tetrahedralize={"size": 0.05})
+    assert "netgen" in model.meshing and model.method == "stiffness-fit-volume"
+    assert len(model.volume_tets) > 0
+    surface_model = hooke.calibrate(cube, hooke.Material(1e5, 0.45), method="surface")
+    assert surface_model.is_surface_model and surface_model.meshing == ""
+
+
+def test_tetrahedralize_refusals_name_the_cause():
+    cube = hooke.cube_surface(3, 1.0)
+    with pytest.raises(hooke.InvalidArgument, match="unknown tetrahedralize option 'sise'"):
+        hooke.tetrahedralize(cube, sise=0.1)
+    with pytest.raises(hooke.InvalidArgument, match="not both"):
+        hooke.tetrahedralize(cube, size=0.1, max_volume=1e-3)
+    with pytest.raises(hooke.InvalidMesh, match="quality floor"):
+        hooke.tetrahedralize(cube, quality=0.99)
+    with pytest.raises(hooke.InvalidMesh, match="closed triangle surface"):
+        hooke.tetrahedralize(hooke.tet_box(1, 1, 1, 1, 1, 1))

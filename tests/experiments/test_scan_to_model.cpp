@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <hooke/calibrate/model_factory.hpp>
+#include <hooke/calibrate/surface_model.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/compare.hpp>
 #include <hooke/experiments/simulation.hpp>
@@ -37,6 +38,26 @@ TEST(ScanToModel, FemurIsTetrahedralizedCalibratedCertifiedAndSimulated) {
   const SimulationSummary s = simulate(model, so, [](int, double, const VecX&, const VecX&) {});
   EXPECT_EQ(s.step_ms.size(), 300u);
   EXPECT_EQ(s.not_converged, 0);
+}
+
+TEST(ScanToModel, SurfaceModelOfAFemurThatIsNotStarShaped) {
+  const std::filesystem::path path = std::filesystem::path(HOOKE_SCAN_DATA) / "femur.off";
+  ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing: scripts/setup.sh installs libcgal-demo";
+  io::ReadOptions ro;
+  ro.metres_per_unit = 0.45;
+  const mesh::Mesh surface = io::read_mesh(path, ro);
+  const material::Material tissue{material::Law::kLinear, 3000.0, 0.45};
+  // The radial construction refuses the femur from its centroid; the depth reading takes it.
+  const calibrate::SurfaceModel s = calibrate::make_surface_model(surface, tissue);
+  EXPECT_FALSE(s.radial);
+  EXPECT_GT(s.discretisation.normal_length.minCoeff(), 0.0);
+  EXPECT_GT(s.k_normal.minCoeff(), 0.0);
+  calibrate::ModelOptions mo;
+  mo.method = "surface";
+  const calibrate::CalibratedModel model = calibrate::calibrate_model(surface, tissue, mo);
+  ASSERT_TRUE(model.surface.has_value());
+  EXPECT_EQ(model.mesh.kind, mesh::ElementKind::kSurfaceTriangle);  // not tetrahedralized
+  EXPECT_NEAR(model.masses.sum() / 3.0, 1000.0 * s.discretisation.volume, 1e-9 * model.masses.sum());
 }
 
 }  // namespace

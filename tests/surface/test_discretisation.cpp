@@ -56,6 +56,48 @@ TEST(Discretisation, MassesSumToTheObjectMassAlsoAfterRefinement) {
   EXPECT_LT(mr(0), m(0));  // the north pole, in the refined area
 }
 
+TEST(Discretisation, DepthReadingMatchesTheRadialOneWhereBothApply) {
+  // A sphere about the origin: the inward ray from a node meets the far side at 2 R (less the chords' sag), so
+  // L'_i = R as the radial reading from the centre gives; a cube's face nodes see the opposite face at its edge.
+  mesh::Mesh sphere = mesh::uv_sphere_surface(16, 24, 0.05);
+  mesh::check_closed_surface(sphere);
+  const Discretisation radial = discretise(sphere, Vec3::Zero()), depth = discretise_by_depth(sphere);
+  for (int i = 0; i < sphere.node_count(); ++i) {
+    EXPECT_NEAR(depth.normal_length(i), radial.normal_length(i), 0.01 * 0.05) << i;
+    EXPECT_NEAR(depth.normal_volume(i), radial.normal_volume(i), 0.05 * radial.normal_volume(i)) << i;
+  }
+  EXPECT_DOUBLE_EQ(depth.volume, radial.volume);
+  mesh::Mesh cube = mesh::cube_surface(4, 1.0);
+  mesh::check_closed_surface(cube);
+  const Discretisation c = discretise_by_depth(cube);
+  for (int i = 0; i < cube.node_count(); ++i) {
+    const Vec3 p = cube.nodes.row(i).transpose();
+    const bool face_interior = ((p.array() > 1e-9) && (p.array() < 1.0 - 1e-9)).count() == 2;
+    if (face_interior) {
+      EXPECT_NEAR(c.normal_length(i), 0.5, 1e-12) << i;
+    }
+  }
+}
+
+TEST(Discretisation, DepthReadingServesASurfaceThatIsNotStarShaped) {
+  // A cube with its top centre pushed deep inside: not star-shaped from the centre (StarShape test), yet every
+  // node's inner point lies inside the body, below its own triangles.
+  mesh::Mesh dent = mesh::cube_surface(4, 1.0);
+  for (int i = 0; i < dent.node_count(); ++i)
+    if (std::abs(dent.nodes(i, 2) - 1.0) < 1e-12 && std::abs(dent.nodes(i, 0) - 0.5) < 1e-12 &&
+        std::abs(dent.nodes(i, 1) - 0.5) < 1e-12)
+      dent.nodes(i, 2) = 0.3;
+  mesh::check_closed_surface(dent);
+  const Discretisation d = discretise_by_depth(dent);
+  EXPECT_GT(d.normal_length.minCoeff(), 0.0);
+  EXPECT_GT(d.normal_volume.minCoeff(), 0.0);
+  for (int i = 0; i < dent.node_count(); ++i) {
+    const Vec3 ci = dent.nodes.row(i).transpose() - d.normal_length(i) * d.normals.row(i).transpose();
+    EXPECT_TRUE((ci.array() > 0.0).all() && (ci.array() < 1.0).all()) << i << ": " << ci.transpose();
+  }
+  EXPECT_NEAR(estimated_masses(d, 2.0).sum(), 2.0, 1e-13);
+}
+
 TEST(Refine, ClosesConformingly) {
   mesh::Mesh cube = mesh::cube_surface(4, 1.0);
   mesh::Mesh r = refine_near(cube, Vec3(0.5, 0.5, 1.0), 0.3);

@@ -98,14 +98,16 @@ void define_model(py::module_& m) {
         "Where the constants of `method` come from (paper and equation).");
   m.def(
       "_calibrate",
-      [](const mesh::Mesh& mesh, const material::Material& material, const std::string& method, double density) {
+      [](const mesh::Mesh& mesh, const material::Material& material, const std::string& method, double density,
+         const mesh::TetrahedralizeOptions& tetrahedralize) {
         calibrate::ModelOptions o;
         o.method = method;
         o.density = density;
+        o.tetrahedralize = tetrahedralize;
         py::gil_scoped_release release;
         return calibrate::calibrate_model(mesh, material, o);
       },
-      py::arg("mesh"), py::arg("material"), py::arg("method") = "auto", py::arg("density") = 1000.0);
+      py::arg("mesh"), py::arg("material"), py::arg("method"), py::arg("density"), py::arg("tetrahedralize"));
   m.def(
       "read_model",
       [](const std::filesystem::path& path) {

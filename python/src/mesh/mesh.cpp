@@ -4,9 +4,11 @@
 #include <pybind11/stl/filesystem.h>
 #include <bindings.hpp>
 #include <core/arrays.hpp>
+#include <hooke/core/error.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/io/mesh_io.hpp>
 #include <hooke/mesh/generators.hpp>
+#include <hooke/mesh/tetrahedralize.hpp>
 #include <hooke/mesh/validate.hpp>
 
 namespace py = pybind11;
@@ -109,6 +111,68 @@ void define_mesh(py::module_& m) {
       },
       py::arg("surface"), py::arg("centre"), py::arg("layers"),
       "Tets filling a closed surface star-shaped about `centre` (m), in `layers` layers towards it.");
+  m.def("_tetrahedralize_options", [](const py::kwargs& kwargs) {
+    // The library's defaults for every option not given (the one place they are written).
+    mesh::TetrahedralizeOptions o;
+    double size = 0.0, max_volume = 0.0;
+    for (const auto& [key, value] : kwargs) {
+      const std::string k = py::str(key);
+      if (k == "size")
+        size = value.cast<double>();
+      else if (k == "max_volume")
+        max_volume = value.cast<double>();
+      else if (k == "surface_mesh")
+        o.surface = mesh::surface_meshing_from_name(value.cast<std::string>());
+      else if (k == "quality")
+        o.min_radius_ratio = value.cast<double>();
+      else if (k == "fineness")
+        o.fineness = value.cast<double>();
+      else if (k == "grading")
+        o.grading = value.cast<double>();
+      else if (k == "optimisation_steps")
+        o.optimisation_steps = value.cast<int>();
+      else
+        throw InvalidArgument("unknown tetrahedralize option '" + k +
+                              "' (valid: size, max_volume, surface_mesh, quality, fineness, grading, "
+                              "optimisation_steps)");
+    }
+    mesh::set_mesh_size(o, size, max_volume);
+    return o;
+  });
+  py::class_<mesh::TetrahedralizeOptions>(m, "_TetrahedralizeOptions");
+  m.def(
+      "_tetrahedralize",
+      [](const mesh::Mesh& surface, const mesh::TetrahedralizeOptions& o) {
+        mesh::TetrahedralizeReport r;
+        mesh::Mesh tets;
+        {
+          py::gil_scoped_release release;
+          tets = mesh::tetrahedralize(surface, o, &r);
+        }
+        py::dict d;
+        d["mesher"] = r.backend;
+        d["surface_mesh"] = std::string(mesh::surface_meshing_name(r.options.surface));
+        d["size"] = r.options.max_size;
+        d["surface_nodes"] = r.surface_nodes;
+        d["surface_triangles"] = r.surface_triangles;
+        d["surface_volume"] = r.surface_volume;
+        d["nodes"] = r.nodes;
+        d["tets"] = r.tets;
+        d["volume"] = r.volume;
+        d["volume_error"] = r.volume_error;
+        d["surface_preserved"] = r.surface_preserved;
+        d["hausdorff"] = r.hausdorff;
+        d["min_radius_ratio"] = r.quality.min_radius_ratio;
+        d["mean_radius_ratio"] = r.quality.mean_radius_ratio;
+        d["min_dihedral"] = r.quality.min_dihedral;
+        d["max_dihedral"] = r.quality.max_dihedral;
+        d["worst_element"] = r.quality.worst_element;
+        d["slivers"] = r.slivers;
+        d["seconds"] = r.seconds;
+        d["summary"] = r.summary();
+        return py::make_tuple(tets, d);
+      },
+      py::arg("surface"), py::arg("options"));
   m.def("cube_surface", &mesh::cube_surface, py::arg("n"), py::arg("size"),
         "The closed triangulated surface of a cube of edge `size` (m), n x n squares per face.");
   m.def("uv_sphere_surface", &mesh::uv_sphere_surface, py::arg("rings"), py::arg("segments"), py::arg("radius"),

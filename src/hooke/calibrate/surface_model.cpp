@@ -1,6 +1,7 @@
 #include <cctype>
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/core/log.hpp>
 #include <hooke/mesh/topology.hpp>
 #include <hooke/springs/spring_block.hpp>
 #include <map>
@@ -63,9 +64,19 @@ SurfaceModel make_surface_model(mesh::Mesh mesh, const material::Material& mater
     throw InvalidArgument("the surface model is linear: its stiffnesses come from E and nu of a linear law");
   SurfaceModel out;
   out.check = mesh::check_closed_surface(mesh);
+  // The radial construction of Fig. 5 where the surface is star-shaped from the centre (always when a centre is
+  // given); otherwise the depth reading of Fig. 6 (surface::discretise_by_depth, docs/surface.md).
   const Vec3 centre = o.centre ? *o.centre : mesh::volume_centroid(mesh);
-  surface::require_star_shaped(mesh, centre);
-  out.discretisation = surface::discretise(mesh, centre);
+  try {
+    surface::require_star_shaped(mesh, centre);
+    out.discretisation = surface::discretise(mesh, centre);
+  } catch (const InvalidMesh& e) {
+    if (o.centre) throw;
+    log(LogLevel::kInfo, std::string("surface model: ") + e.what() +
+                             "; each node anchored at half the body's depth along its normal instead");
+    out.discretisation = surface::discretise_by_depth(mesh);
+    out.radial = false;
+  }
   const surface::Discretisation& d = out.discretisation;
   const int n = mesh.node_count();
   const double e = material.youngs_modulus, nu = material.poisson_ratio;

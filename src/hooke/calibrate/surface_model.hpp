@@ -57,7 +57,8 @@ struct SurfaceModel {
   mesh::Mesh mesh;                 ///< the checked, outward-oriented surface
   mesh::SurfaceCheckReport check;  ///< what check_closed_surface fixed
   surface::Discretisation discretisation;
-  VecX masses;                                          ///< per DOF (3 per node), kg, summing to 3 M
+  bool radial = true;  ///< Fig. 5's radial links from one centre; false: the depth reading (discretise_by_depth)
+  VecX masses;         ///< per DOF (3 per node), kg, summing to 3 M
   VecX k_normal, k_shear, k_bulk;                       ///< K_E,i, K_G,i, K_B,i as used, N/m
   double membrane_thickness = 0.0;                      ///< t used, m
   SpringModel membrane;                                 ///< the membrane springs (empty when t = 0)
@@ -68,8 +69,11 @@ struct SurfaceModel {
 };
 
 /// Builds the surface model of `mesh` (a closed triangle surface: checked and oriented, see
-/// mesh::check_closed_surface and surface::require_star_shaped) for `material` (E, nu; linear).
-/// @throws InvalidMesh for a surface the construction cannot use, InvalidMaterial for E, nu out of range
+/// mesh::check_closed_surface) for `material` (E, nu; linear). Radial links from options.centre (or the volume
+/// centroid) where the surface is star-shaped from it (surface::require_star_shaped); a surface that is not, with
+/// no centre given, gets the depth reading (surface::discretise_by_depth, `radial` false).
+/// @throws InvalidMesh for a surface the construction cannot use (or not star-shaped from a given centre),
+///   InvalidMaterial for E, nu out of range
 SurfaceModel make_surface_model(mesh::Mesh mesh, const material::Material& material,
                                 const SurfaceOptions& options = {});
 

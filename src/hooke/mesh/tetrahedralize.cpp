@@ -183,6 +183,14 @@ double edge_of_regular_tet(double volume) {
   return std::cbrt(6.0 * std::sqrt(2.0) * volume);
 }
 
+void set_mesh_size(TetrahedralizeOptions& options, double max_edge, double max_volume) {
+  if (max_edge != 0.0 && max_volume != 0.0) throw InvalidArgument("give a largest tet edge or volume, not both");
+  if (max_edge < 0.0 || !std::isfinite(max_edge))
+    throw InvalidArgument("the largest tet edge must be a length > 0 m, not " + general(max_edge));
+  if (max_edge > 0.0) options.max_size = max_edge;
+  if (max_volume != 0.0) options.max_size = edge_of_regular_tet(max_volume);
+}
+
 std::string TetrahedralizeReport::summary() const {
   return backend + ", surface " + std::string(surface_meshing_name(options.surface)) + ", size " +
          general(options.max_size) + " m, fineness " + general(options.fineness) + ", grading " +

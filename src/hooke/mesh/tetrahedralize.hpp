@@ -79,4 +79,8 @@ Mesh tetrahedralize(Mesh surface, const TetrahedralizeOptions& options = {}, Tet
 /// @pre volume > 0
 double edge_of_regular_tet(double volume);
 
+/// Sets options.max_size from the largest tet edge `max_edge` (m) or the largest tet volume `max_volume` (m^3),
+/// whichever is not 0 (both 0: left as it is). @throws InvalidArgument when both are given or one is negative
+void set_mesh_size(TetrahedralizeOptions& options, double max_edge, double max_volume);
+
 }  // namespace hooke::mesh

@@ -31,6 +31,19 @@ struct Discretisation {
 /// @pre check_closed_surface(mesh) and require_star_shaped(mesh, centre) passed
 Discretisation discretise(const mesh::Mesh& mesh, const Vec3& centre);
 
+/// The discretisation of any closed surface, star-shaped or not (a bone, an organ): hooke's reading of Fig. 6 without
+/// one centre. Each node's inner point c_i lies on its inward normal line at half the body's depth there,
+/// c_i = p_i - L'_i N_i with L'_i = t_i / 2 and t_i the distance along -N_i to the surface's far side (a ray cast), so
+/// c_i is inside the body and its anchor axis crosses no surface (at a thin crease, whose averaged normal can point
+/// out of the body, along the first of its triangles' inward normals whose ray meets the surface); normal_volume is
+/// the sum of vol(c_i, t) over the
+/// node's triangles as in Fig. 6, and radial_volume (the masses' estimation ratio) the same cones, since no radial
+/// links exist. `centre` is the volume centroid (reported only; it may lie outside), radial_length = L'_i.
+/// Cost O(#V #T) ray-triangle tests, shared over the OpenMP threads.
+/// @pre check_closed_surface(mesh) passed
+/// @throws InvalidMesh naming a node from which no inward ray meets a triangle (a surface oriented inwards)
+Discretisation discretise_by_depth(const mesh::Mesh& mesh);
+
 /// Node masses m_i = M r_i / sum_j r_j with r_i = radial_volume(i) (the paper's estimation ratio), kg; they sum
 /// to M for any mesh, also after a local refinement (re-discretise, then call again).
 /// @pre total_mass > 0, radial_volume > 0
