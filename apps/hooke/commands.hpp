@@ -56,8 +56,8 @@ struct ModelSource {
 /// Registers [MESH], --model, --young, --poisson, --method, --unit, --thickness, --density, --plane, the
 /// surface model's options and the tetrahedralization options on `cmd`, bound to `in`.
 void add_model_source_options(CLI::App* cmd, ModelSource& in);
-/// The model `in` names: read from --model (checked against MESH when one is given too), or calibrated on MESH
-/// by the library's model factory.
+/// The model `in` names: read from --model (checked against MESH when one is given too; a MESH ending in .json is
+/// read as --model), or calibrated on MESH by the library's model factory.
 /// @throws InvalidArgument when neither or a conflicting combination is given
 calibrate::CalibratedModel load_model(const ModelSource& in);
 

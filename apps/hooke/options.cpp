@@ -1,6 +1,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/calibrate/model_file.hpp>
 #include <hooke/core/error.hpp>
@@ -89,7 +90,7 @@ mesh::TetrahedralizeOptions tetrahedralize_options(const TetrahedralizeInput& in
 void add_model_source_options(CLI::App* cmd, ModelSource& in) {
   cmd->add_option("mesh", in.mesh_path,
                   "Mesh file (.msh, .vtu, .node/.ele, .obj, .off, .stl; a closed surface is tetrahedralized for every "
-                  "method but surface); optional with --model");
+                  "method but surface), or a model file (.json, as --model); optional with --model");
   cmd->add_option("--model", in.model_path,
                   "Model file (.json, from hooke calibrate or written by hand) instead of "
                   "--method, --young and --poisson");
@@ -107,7 +108,13 @@ void add_model_source_options(CLI::App* cmd, ModelSource& in) {
   add_tetrahedralize_options(cmd, in.tetrahedralize);
 }
 
-calibrate::CalibratedModel load_model(const ModelSource& in) {
+calibrate::CalibratedModel load_model(const ModelSource& source) {
+  // A model file given where the mesh goes (hooke view m.json) is read as --model.
+  ModelSource in = source;
+  if (in.model_path.empty() && std::filesystem::path(in.mesh_path).extension() == ".json") {
+    in.model_path = in.mesh_path;
+    in.mesh_path.clear();
+  }
   io::ReadOptions ro;
   ro.metres_per_unit = metres_per_unit(in.unit);
   if (!in.model_path.empty()) {
