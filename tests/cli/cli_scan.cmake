@@ -29,7 +29,7 @@ foreach(i RANGE 2)
     message(FATAL_ERROR "certificate case ${i}: relative L2 ${l2} > 0.15")
   endif()
 endforeach()
-run_ok(simulate simulate --model ${OUT}/m.json --gravity --steps 50 --damping-mass 10 -o ${OUT}/sim)
+run_ok(simulate simulate ${OUT}/m.json --gravity --steps 50 --damping-mass 10 -o ${OUT}/sim)  # a model file as MESH
 
 run_fails("open scan" "hole" ${OUT}/head.msh mesh tetrahedralize ${SCANS}/head.off -o ${OUT}/head.msh)
 run_fails("both sizes" "not both" ${OUT}/x.msh mesh tetrahedralize ${SCANS}/elephant.off --size 0.1 --max-volume 1e-3
