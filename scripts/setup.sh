@@ -2,6 +2,7 @@
 # Installs every Debian package hooke needs. Idempotent: packages already present are skipped.
 # Usage: scripts/setup.sh [--meshing] [--bench]
 #   (default)  build, test and report dependencies, and the viewer's (GLFW, Dear ImGui, stb, Xvfb)
+#              and Dask distributed with pandas (hooke batch, studies beyond one machine)
 #              and the real scanned surfaces the meshing tests use (CGAL's sample data in libcgal-demo, not linked)
 #   --meshing  also gmsh and tetgen, needed only to regenerate the committed meshes in data/meshes
 #   --bench    also Bullet, the benchmark peer of bench/
@@ -13,6 +14,7 @@ core=(
   libcli11-dev libfmt-dev libspdlog-dev nlohmann-json3-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib python3-meshio pybind11-dev
+  python3-distributed python3-pandas
   libglfw3-dev libimgui-dev libstb-dev xvfb xauth
   libcgal-demo
 )

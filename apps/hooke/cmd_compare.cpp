@@ -14,7 +14,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "plot.hpp"
+#include "python.hpp"
 
 namespace hooke::cli {
 namespace {

@@ -1,5 +1,11 @@
-// hooke reproduce lloyd2007|arnab2008 [-o DIR] [--no-figures]: a paper's experiments with a report.
+// hooke reproduce lloyd2007|arnab2008|nu-range [-o DIR] [--no-figures] [--scheduler ADDRESS|local]: a paper's
+// experiments with a report; nu-range's comparisons optionally as Dask tasks (hooke.batch).
+#include <unistd.h>
+
+#include <chrono>
 #include <cstdio>
+#include <fstream>
+#include <hooke/core/atomic_file.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
 #include <hooke/core/output_transaction.hpp>
@@ -10,7 +16,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "plot.hpp"
+#include "python.hpp"
 
 #ifndef HOOKE_MESH_DIR
 #define HOOKE_MESH_DIR "data/meshes"
@@ -27,11 +33,40 @@ std::vector<std::filesystem::path> figure_specs(const std::string& dir,
   return specs;
 }
 
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw IoError("cannot read " + path.string());
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The study's rows computed as Dask tasks by hooke.batch (in the serial study's order), then its report here.
+experiments::NuRangeReport nu_range_on_dask(const std::string& mesh_dir, const experiments::NuRangeOptions& options,
+                                            const std::string& scheduler) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::filesystem::path scratch =
+      std::filesystem::temp_directory_path() / ("hooke-nu-range-" + std::to_string(getpid()));
+  std::filesystem::create_directories(scratch);
+  struct Cleanup {
+    std::filesystem::path dir;
+    ~Cleanup() {
+      std::error_code ec;
+      std::filesystem::remove_all(dir, ec);
+    }
+  } cleanup{scratch};
+  write_file_atomically(scratch / "options.json",
+                        [&](std::ostream& out) { out << experiments::nu_range_options_json(options); });
+  const int rc = run_python({"-m", "hooke.batch", "--nu-range-rows", (scratch / "options.json").string(), "--meshes",
+                             mesh_dir, "-o", (scratch / "rows.json").string(), "--scheduler", scheduler});
+  if (rc != 0) throw IoError("the nu-range study on Dask (hooke.batch) failed with exit code " + std::to_string(rc));
+  return experiments::nu_range_report(options, experiments::nu_range_rows_from_json(read_text(scratch / "rows.json")),
+                                      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+}
+
 }  // namespace
 
 Action add_reproduce_command(CLI::App& app) {
   struct Options {
-    std::string paper, out_dir, mesh_dir = HOOKE_MESH_DIR;
+    std::string paper, out_dir, mesh_dir = HOOKE_MESH_DIR, scheduler;
     bool no_figures = false;
     experiments::NuRangeOptions nu_range;
   };
@@ -58,6 +93,9 @@ Action add_reproduce_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--large-strain", o->nu_range.large_strain, "nu-range: the large-deformation strain (0: none)")
       ->capture_default_str();
+  cmd->add_option("--scheduler", o->scheduler,
+                  "nu-range: run the comparisons as Dask tasks (hooke.batch, docs/batch.md) on the scheduler at this "
+                  "address (tcp://host:8786), or 'local' for a local cluster of one worker per core; same report");
   return [o] {
     if (o->out_dir.empty()) o->out_dir = "out/" + o->paper;
     if (o->paper != "lloyd2007" && o->paper != "arnab2008" && o->paper != "nu-range")
@@ -66,13 +104,16 @@ Action add_reproduce_command(CLI::App& app) {
     // report (.md) last, so a run killed at any instant leaves the previous report whole, with its figures.
     OutputTransaction outputs;
     const std::string staging = outputs.stage_folder(o->out_dir).string();
+    if (!o->scheduler.empty() && o->paper != "nu-range")
+      throw InvalidArgument("--scheduler runs the nu-range study only; " + o->paper + " runs here");
     if (o->paper == "nu-range") {
       const LogSink previous = set_log_sink([](LogLevel level, std::string_view message) {
         std::fprintf(level >= LogLevel::kWarning ? stderr : stdout, "%.*s\n", static_cast<int>(message.size()),
                      message.data());
         std::fflush(stdout);
       });
-      const auto report = experiments::reproduce_nu_range(o->mesh_dir, o->nu_range);
+      const auto report = o->scheduler.empty() ? experiments::reproduce_nu_range(o->mesh_dir, o->nu_range)
+                                               : nu_range_on_dask(o->mesh_dir, o->nu_range, o->scheduler);
       set_log_sink(previous);
       experiments::write_nu_range_report(staging, report);
       for (const auto& r : report.recommendations) std::printf("pick %s\n", r.c_str());

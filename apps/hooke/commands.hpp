@@ -96,6 +96,8 @@ Action add_bench_command(CLI::App& app);
 Action add_calibrate_command(CLI::App& app);
 /// `hooke identify`: a spring model identified from reference deformations (Lloyd Eq. 1-2).
 Action add_identify_command(CLI::App& app);
+/// `hooke batch`: a study table's jobs on Dask distributed (hooke.batch).
+Action add_batch_command(CLI::App& app);
 /// `hooke mesh info|convert`: inspect and convert meshes.
 Action add_mesh_command(CLI::App& app);
 

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   const hooke::cli::Action bench = hooke::cli::add_bench_command(app);
   const hooke::cli::Action calibrate = hooke::cli::add_calibrate_command(app);
   const hooke::cli::Action identify = hooke::cli::add_identify_command(app);
+  const hooke::cli::Action batch = hooke::cli::add_batch_command(app);
   CLI::App* view_cmd =
       app.add_subcommand("view", "Interactive viewer: grab the model with the mouse, change E and nu live");
 #ifdef HOOKE_HAVE_VIEWER
@@ -41,6 +42,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("bench")) return bench();
     if (app.got_subcommand("calibrate")) return calibrate();
     if (app.got_subcommand("identify")) return identify();
+    if (app.got_subcommand("batch")) return batch();
     if (app.got_subcommand("view")) return view();
     return 2;
   });

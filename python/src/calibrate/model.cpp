@@ -126,11 +126,13 @@ void define_model(py::module_& m) {
       "Writes the model as .json, .vtu (springs as lines) or .csv by extension, atomically.");
   m.def(
       "certify",
-      [](CalibratedModel& model, double strain, int layers) {
+      [](CalibratedModel& model, double strain, int layers, const std::vector<std::string>& loads) {
+        std::vector<experiments::LoadKind> kinds;
+        for (const auto& name : loads) kinds.push_back(experiments::load_kind_from_name(name));
         std::vector<calibrate::CertificateCase> cases;
         {
           py::gil_scoped_release release;
-          cases = experiments::certify(model, strain, layers);
+          cases = experiments::certify(model, strain, layers, kinds);
         }
         model.certificate = cases;
         py::list l;
@@ -138,8 +140,9 @@ void define_model(py::module_& m) {
         return l;
       },
       py::arg("model"), py::arg("strain") = 0.01, py::arg("layers") = 4,
-      "Stretch, compress and shear at mean linear-FEM strain `strain` against the linear FEM: per case max / mean "
-      "node error (m) and relative L2. Stored in model.certificate (written with the model).");
+      py::arg("loads") = std::vector<std::string>{"stretch", "compress", "shear"},
+      "Stretch, compress and shear (or the `loads` named) at mean linear-FEM strain `strain` against the linear FEM: "
+      "per case max / mean node error (m) and relative L2. Stored in model.certificate (written with the model).");
 }
 
 }  // namespace hooke::python

@@ -170,10 +170,12 @@ Comparison compare_surface(const mesh::Mesh& surface, const material::Material& 
   return compare_calibrated(calibrate::calibrate_model(surface, material, mo), options, layers);
 }
 
-std::vector<calibrate::CertificateCase> certify(const calibrate::CalibratedModel& model, double strain, int layers) {
+std::vector<calibrate::CertificateCase> certify(const calibrate::CalibratedModel& model, double strain, int layers,
+                                                const std::vector<LoadKind>& loads) {
   if (!(strain > 0.0) || !std::isfinite(strain)) throw InvalidArgument("certify: the strain must be > 0");
+  if (loads.empty()) throw InvalidArgument("certify: no load case to certify");
   std::vector<calibrate::CertificateCase> out;
-  for (LoadKind kind : {LoadKind::kStretch, LoadKind::kCompress, LoadKind::kShear}) {
+  for (LoadKind kind : loads) {
     CompareOptions o;
     o.load = kind;
     o.strain = strain;

@@ -71,10 +71,13 @@ Comparison compare_surface(const mesh::Mesh& surface, const material::Material& 
 /// @throws InvalidArgument for the "fem" model (nothing to compare) or a model validate_model rejects
 Comparison compare_calibrated(const calibrate::CalibratedModel& model, const CompareOptions& options, int layers = 4);
 
-/// The certificate a model is shipped with (`hooke calibrate --certify`): stretch, compress and shear at mean
-/// linear-FEM strain `strain` against the linear FEM, each case's max / mean node error (m) and relative L2.
-/// @throws SolverFailure when a solve does not converge; InvalidArgument for strain <= 0
+/// The certificate a model is shipped with (`hooke calibrate --certify`): stretch, compress and shear (or the cases
+/// `loads` names, in its order) at mean linear-FEM strain `strain` against the linear FEM, each case's max / mean
+/// node error (m) and relative L2.
+/// @throws SolverFailure when a solve does not converge; InvalidArgument for strain <= 0 or no load
 std::vector<calibrate::CertificateCase> certify(const calibrate::CalibratedModel& model, double strain = 0.01,
-                                                int layers = 4);
+                                                int layers = 4,
+                                                const std::vector<LoadKind>& loads = {
+                                                    LoadKind::kStretch, LoadKind::kCompress, LoadKind::kShear});
 
 }  // namespace hooke::experiments

@@ -35,39 +35,41 @@ std::vector<Regime> regimes(const NuRangeOptions& o) {
   return out;
 }
 
-// One mesh in one 2D reduction (tets: none) and the methods run on it.
+// A task's mesh in its 2D reduction (tets: none): the table it belongs to and the methods run on it.
 struct Unit {
-  std::string mesh_name;
-  const mesh::Mesh* mesh = nullptr;
-  material::Plane plane = material::Plane::kStress;
   std::string table;  // calibrate::method_table_name
+  std::string label;  // the mesh, with its plane for triangles
   const std::vector<std::string>* methods = nullptr;
-  std::string label() const {
-    return table == "tet" ? mesh_name : mesh_name + " (plane " + std::string(material::plane_name(plane)) + ")";
-  }
 };
 
-material::Material material_at(const Unit& u, double nu) {
-  material::Material m{material::Law::kLinear, 14630.0, nu};
-  m.plane = u.plane;
-  return m;
+Unit unit_of(const mesh::Mesh& mesh, const NuRangeOptions& o, const NuRangeTask& t) {
+  if (mesh.kind == mesh::ElementKind::kTet) return {"tet", t.mesh, &o.methods};
+  if (mesh.kind != mesh::ElementKind::kTriangle)
+    throw InvalidArgument("nu-range: " + t.mesh + " is a " + std::string(mesh::element_kind_name(mesh.kind)) +
+                          " mesh; the study runs tet and triangle meshes");
+  material::Material m;
+  m.plane = t.plane;
+  return {calibrate::method_table_name(mesh.kind, m),
+          t.mesh + " (plane " + std::string(material::plane_name(t.plane)) + ")", &o.triangle_methods};
 }
 
 // Every method on one mesh, load, regime and nu: one FEM reference, one spring solve per method.
-std::vector<NuRangeRow> run_rows(const Unit& u, const std::string& load, const Regime& regime, double nu) {
-  const std::vector<material::Material> materials{material_at(u, nu)};
-  const mesh::Mesh& mesh = *u.mesh;
+std::vector<NuRangeRow> run_task(const mesh::Mesh& mesh, const NuRangeOptions& options, const NuRangeTask& task) {
+  const Unit u = unit_of(mesh, options, task);
+  material::Material material{material::Law::kLinear, 14630.0, task.poisson};
+  material.plane = task.plane;
+  const std::vector<material::Material> materials{material};
   const std::vector<std::string>& methods = *u.methods;
   CompareOptions o;
-  o.load = load_kind_from_name(load);
-  o.strain = regime.strain;
-  o.reference = material::law_from_name(regime.reference);
+  o.load = load_kind_from_name(task.load);
+  o.strain = task.strain;
+  o.reference = material::law_from_name(task.reference);
   std::vector<calibrate::SpringModel> models;
   for (const auto& method : methods)
     models.push_back(calibrate::calibrate(mesh, materials, calibrate::method_from_name(method)));
   std::vector<NuRangeRow> rows;
   for (const auto& method : methods)
-    rows.push_back({u.table, u.label(), load, regime.reference, regime.strain, nu, method, -1.0, ""});
+    rows.push_back({u.table, u.label, task.load, task.reference, task.strain, task.poisson, method, -1.0, ""});
   try {
     const std::vector<Comparison> c = compare_models(mesh, materials, models, o);
     for (std::size_t m = 0; m < methods.size(); ++m) {
@@ -79,6 +81,13 @@ std::vector<NuRangeRow> run_rows(const Unit& u, const std::string& load, const R
     }
   } catch (const SolverFailure& e) {
     for (auto& row : rows) row.status = e.what();
+  }
+  for (const NuRangeRow& row : rows) {
+    char line[200];
+    std::snprintf(line, sizeof line, "nu-range: %-28s %-8s %5.3g %% %-6s nu %-5.3g %-21s relative L2 %.4g",
+                  row.mesh.c_str(), row.load.c_str(), 100.0 * row.strain, row.reference.c_str(), row.poisson,
+                  row.method.c_str(), row.relative_l2);
+    log(LogLevel::kInfo, std::string(line) + (row.status == "converged" ? "" : " (" + row.status + ")"));
   }
   return rows;
 }
@@ -215,63 +224,149 @@ std::vector<Figure> figures(const NuRangeReport& r) {
 
 }  // namespace
 
-NuRangeReport reproduce_nu_range(const std::filesystem::path& mesh_dir, const NuRangeOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
-  NuRangeReport r;
-  r.options = options;
+std::vector<NuRangeTask> nu_range_tasks(const std::filesystem::path& mesh_dir, const NuRangeOptions& options) {
   for (const auto* list : {&options.methods, &options.triangle_methods})  // refuse unknown names first
     for (const auto& method : *list) calibrate::method_from_name(method);
   for (const auto& load : options.loads) load_kind_from_name(load);
   std::vector<material::Plane> planes;
   for (const auto& p : options.planes) planes.push_back(material::plane_from_name(p));
+  std::vector<NuRangeTask> out;
   for (const auto& name : options.meshes) {
     const mesh::Mesh mesh = io::read_mesh(mesh_dir / (name + ".msh"));
-    std::vector<Unit> units;
-    if (mesh.kind == mesh::ElementKind::kTet) {
-      units.push_back({name, &mesh, material::Plane::kStress, "tet", &options.methods});
-    } else if (mesh.kind == mesh::ElementKind::kTriangle) {
-      for (const material::Plane plane : planes) {
-        material::Material m;
-        m.plane = plane;
-        units.push_back({name, &mesh, plane, calibrate::method_table_name(mesh.kind, m), &options.triangle_methods});
-      }
-    } else {
-      throw InvalidArgument("nu-range: " + name + " is a " + std::string(mesh::element_kind_name(mesh.kind)) +
-                            " mesh; the study runs tet and triangle meshes");
-    }
-    for (const Unit& unit : units)
+    std::vector<material::Plane> unit_planes{material::Plane::kStress};
+    if (mesh.kind == mesh::ElementKind::kTriangle) unit_planes = planes;
+    for (const material::Plane plane : unit_planes) {
+      unit_of(mesh, options, {name, plane, "", "", 0.0, 0.0});  // refuses meshes of other kinds
       for (const auto& load : options.loads)
         for (const Regime& regime : regimes(options))
-          for (double nu : options.poisson)
-            for (const NuRangeRow& row : run_rows(unit, load, regime, nu)) {
-              r.rows.push_back(row);
-              char line[200];
-              std::snprintf(line, sizeof line, "nu-range: %-28s %-8s %5.3g %% %-6s nu %-5.3g %-21s relative L2 %.4g",
-                            row.mesh.c_str(), load.c_str(), 100.0 * regime.strain, regime.reference.c_str(), nu,
-                            row.method.c_str(), row.relative_l2);
-              log(LogLevel::kInfo, std::string(line) + (row.status == "converged" ? "" : " (" + row.status + ")"));
-            }
+          for (double nu : options.poisson) out.push_back({name, plane, load, regime.reference, regime.strain, nu});
+    }
   }
+  return out;
+}
+
+std::vector<NuRangeRow> run_nu_range_task(const std::filesystem::path& mesh_dir, const NuRangeOptions& options,
+                                          const NuRangeTask& task) {
+  return run_task(io::read_mesh(mesh_dir / (task.mesh + ".msh")), options, task);
+}
+
+NuRangeReport nu_range_report(const NuRangeOptions& options, std::vector<NuRangeRow> rows, double seconds) {
+  NuRangeReport r;
+  r.options = options;
+  r.rows = std::move(rows);
   r.recommendations = recommend(r);
   r.method_table = method_table(r);
   r.figures = figures(r);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.seconds = seconds;
   return r;
+}
+
+NuRangeReport reproduce_nu_range(const std::filesystem::path& mesh_dir, const NuRangeOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<NuRangeRow> rows;
+  std::map<std::string, mesh::Mesh> meshes;  // each mesh read once
+  for (const NuRangeTask& task : nu_range_tasks(mesh_dir, options)) {
+    auto it = meshes.find(task.mesh);
+    if (it == meshes.end()) it = meshes.emplace(task.mesh, io::read_mesh(mesh_dir / (task.mesh + ".msh"))).first;
+    for (NuRangeRow& row : run_task(it->second, options, task)) rows.push_back(std::move(row));
+  }
+  return nu_range_report(options, std::move(rows),
+                         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+}
+
+namespace {
+
+nlohmann::json parse_json(const std::string& text, const std::string& what) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw ParseError::at_entry(what, "", e.what());
+  }
+}
+
+template <typename T>
+T entry(const nlohmann::json& j, const char* key, const std::string& what) {
+  try {
+    return j.at(key).get<T>();
+  } catch (const nlohmann::json::exception& e) {
+    throw ParseError::at_entry(what, key, e.what());
+  }
+}
+
+nlohmann::json row_json(const NuRangeRow& row) {
+  return {{"table", row.table},   {"mesh", row.mesh},       {"load", row.load},     {"reference", row.reference},
+          {"strain", row.strain}, {"poisson", row.poisson}, {"method", row.method}, {"relative_l2", row.relative_l2},
+          {"status", row.status}};
+}
+
+}  // namespace
+
+std::string nu_range_options_json(const NuRangeOptions& o) {
+  return nlohmann::json{{"poisson", o.poisson},
+                        {"methods", o.methods},
+                        {"triangle_methods", o.triangle_methods},
+                        {"planes", o.planes},
+                        {"meshes", o.meshes},
+                        {"loads", o.loads},
+                        {"small_strain", o.small_strain},
+                        {"large_strain", o.large_strain}}
+      .dump();
+}
+
+NuRangeOptions nu_range_options_from_json(const std::string& text) {
+  const std::string what = "nu-range options";
+  const nlohmann::json j = parse_json(text, what);
+  NuRangeOptions o;
+  o.poisson = entry<std::vector<double>>(j, "poisson", what);
+  o.methods = entry<std::vector<std::string>>(j, "methods", what);
+  o.triangle_methods = entry<std::vector<std::string>>(j, "triangle_methods", what);
+  o.planes = entry<std::vector<std::string>>(j, "planes", what);
+  o.meshes = entry<std::vector<std::string>>(j, "meshes", what);
+  o.loads = entry<std::vector<std::string>>(j, "loads", what);
+  o.small_strain = entry<double>(j, "small_strain", what);
+  o.large_strain = entry<double>(j, "large_strain", what);
+  return o;
+}
+
+std::string nu_range_task_json(const NuRangeTask& t) {
+  return nlohmann::json{{"mesh", t.mesh},     {"plane", std::string(material::plane_name(t.plane))},
+                        {"load", t.load},     {"reference", t.reference},
+                        {"strain", t.strain}, {"poisson", t.poisson}}
+      .dump();
+}
+
+NuRangeTask nu_range_task_from_json(const std::string& text) {
+  const std::string what = "nu-range task";
+  const nlohmann::json j = parse_json(text, what);
+  return {entry<std::string>(j, "mesh", what), material::plane_from_name(entry<std::string>(j, "plane", what)),
+          entry<std::string>(j, "load", what), entry<std::string>(j, "reference", what),
+          entry<double>(j, "strain", what),    entry<double>(j, "poisson", what)};
+}
+
+std::string nu_range_rows_json(const std::vector<NuRangeRow>& rows) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& row : rows) out.push_back(row_json(row));
+  return out.dump();
+}
+
+std::vector<NuRangeRow> nu_range_rows_from_json(const std::string& text) {
+  const std::string what = "nu-range rows";
+  const nlohmann::json j = parse_json(text, what);
+  if (!j.is_array()) throw ParseError::at_entry(what, "", "expected an array of rows");
+  std::vector<NuRangeRow> rows;
+  for (const auto& r : j)
+    rows.push_back({entry<std::string>(r, "table", what), entry<std::string>(r, "mesh", what),
+                    entry<std::string>(r, "load", what), entry<std::string>(r, "reference", what),
+                    entry<double>(r, "strain", what), entry<double>(r, "poisson", what),
+                    entry<std::string>(r, "method", what), entry<double>(r, "relative_l2", what),
+                    entry<std::string>(r, "status", what)});
+  return rows;
 }
 
 void write_nu_range_report(const std::filesystem::path& dir, const NuRangeReport& report) {
   create_output_folder(dir);
   nlohmann::json rows = nlohmann::json::array();
-  for (const auto& row : report.rows)
-    rows.push_back({{"table", row.table},
-                    {"mesh", row.mesh},
-                    {"load", row.load},
-                    {"reference", row.reference},
-                    {"strain", row.strain},
-                    {"poisson", row.poisson},
-                    {"method", row.method},
-                    {"relative_l2", row.relative_l2},
-                    {"status", row.status}});
+  for (const auto& row : report.rows) rows.push_back(row_json(row));
   const nlohmann::json j = {{"study", "spring models against FEM over Poisson's ratio"},
                             {"youngs_modulus_pa", 14630.0},
                             {"rows", rows},

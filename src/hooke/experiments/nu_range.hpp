@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <hooke/calibrate/method_choice.hpp>
 #include <hooke/experiments/figure.hpp>
+#include <hooke/material/material.hpp>
 #include <string>
 #include <vector>
 
@@ -50,10 +51,46 @@ struct NuRangeReport {
   double seconds = 0.0;
 };
 
-/// Runs the study (E = 14 630 Pa; experiments::compare for every row), logging each row at LogLevel::kInfo. About
-/// 20 minutes on one core with the defaults. @param mesh_dir  the committed meshes
+/// One independent piece of the study: every method of a mesh's table on one mesh, plane, load, regime and nu (one
+/// FEM reference shared by the methods). The study is the concatenation of its tasks' rows in nu_range_tasks' order,
+/// so tasks may run anywhere (hooke.batch on Dask) and give the serial study's report.
+struct NuRangeTask {
+  std::string mesh;                                  ///< committed mesh name (data/meshes/<mesh>.msh)
+  material::Plane plane = material::Plane::kStress;  ///< the 2D reduction (triangle meshes; tets: kStress)
+  std::string load;                                  ///< "stretch", "compress" or "shear"
+  std::string reference;                             ///< "linear" or "stvk"
+  double strain = 0.0;                               ///< mean linear-FEM strain of the load
+  double poisson = 0.0;                              ///< nu
+};
+
+/// The study's tasks in the order the serial study runs them (meshes, planes, loads, regimes, nu).
+/// @throws IoError when a mesh is missing; InvalidArgument for an unknown method, load or plane, or a mesh that is
+///         neither tets nor triangles
+std::vector<NuRangeTask> nu_range_tasks(const std::filesystem::path& mesh_dir, const NuRangeOptions& options = {});
+
+/// The rows of one task (one per method of the mesh's table, in options' order), each logged at LogLevel::kInfo.
+/// A solve that fails is recorded in its row (relative_l2 -1 and the message), not thrown.
+/// @throws IoError when the mesh is missing
+std::vector<NuRangeRow> run_nu_range_task(const std::filesystem::path& mesh_dir, const NuRangeOptions& options,
+                                          const NuRangeTask& task);
+
+/// The report of a study from its rows (the concatenation of the tasks' rows in order): recommendations, the method
+/// table and the figures. `seconds`: the study's wall time.
+NuRangeReport nu_range_report(const NuRangeOptions& options, std::vector<NuRangeRow> rows, double seconds);
+
+/// Runs the study (E = 14 630 Pa; experiments::compare for every row): every task of nu_range_tasks in order, then
+/// nu_range_report. About 20 minutes on one core with the defaults. @param mesh_dir  the committed meshes
 /// @throws IoError when a mesh is missing; InvalidArgument for an unknown method or load
 NuRangeReport reproduce_nu_range(const std::filesystem::path& mesh_dir, const NuRangeOptions& options = {});
+
+/// JSON forms of the options, a task and rows (numbers round-trip exactly), for studies run as separate processes.
+/// @throws ParseError (from the _from_json functions) naming the missing or mistyped entry
+std::string nu_range_options_json(const NuRangeOptions& options);
+NuRangeOptions nu_range_options_from_json(const std::string& json);
+std::string nu_range_task_json(const NuRangeTask& task);
+NuRangeTask nu_range_task_from_json(const std::string& json);
+std::string nu_range_rows_json(const std::vector<NuRangeRow>& rows);
+std::vector<NuRangeRow> nu_range_rows_from_json(const std::string& json);
 
 /// Writes `dir`/nu_range.json (every row), `dir`/nu_range.md (one table per mesh, plane, load and regime: methods x
 /// nu; the recommendations), `dir`/method_table.inc (the method table as src/hooke/calibrate/method_table.inc holds it)
