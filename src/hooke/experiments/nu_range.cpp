@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <hooke/core/atomic_file.hpp>
+#include <hooke/core/blas_threads.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
 #include <hooke/experiments/compare.hpp>
@@ -247,6 +248,7 @@ std::vector<NuRangeTask> nu_range_tasks(const std::filesystem::path& mesh_dir, c
 
 std::vector<NuRangeRow> run_nu_range_task(const std::filesystem::path& mesh_dir, const NuRangeOptions& options,
                                           const NuRangeTask& task) {
+  const ScopedBlasThreads one_thread;  // the same bits on any machine (core/blas_threads.hpp)
   return run_task(io::read_mesh(mesh_dir / (task.mesh + ".msh")), options, task);
 }
 
@@ -263,6 +265,7 @@ NuRangeReport nu_range_report(const NuRangeOptions& options, std::vector<NuRange
 
 NuRangeReport reproduce_nu_range(const std::filesystem::path& mesh_dir, const NuRangeOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
+  const ScopedBlasThreads one_thread;  // the same bits on any machine (core/blas_threads.hpp)
   std::vector<NuRangeRow> rows;
   std::map<std::string, mesh::Mesh> meshes;  // each mesh read once
   for (const NuRangeTask& task : nu_range_tasks(mesh_dir, options)) {

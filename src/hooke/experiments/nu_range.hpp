@@ -51,6 +51,9 @@ struct NuRangeReport {
   double seconds = 0.0;
 };
 
+/// The study runs the BLAS on one thread (ScopedBlasThreads), so that its numbers are the same bits on any machine and
+/// in any process: the serial run and hooke.batch's Dask workers write the same report.
+///
 /// One independent piece of the study: every method of a mesh's table on one mesh, plane, load, regime and nu (one
 /// FEM reference shared by the methods). The study is the concatenation of its tasks' rows in nu_range_tasks' order,
 /// so tasks may run anywhere (hooke.batch on Dask) and give the serial study's report.

@@ -1,0 +1,21 @@
+#include <gtest/gtest.h>
+
+#include <hooke/core/blas_threads.hpp>
+
+namespace hooke {
+namespace {
+
+// Debian's OpenBLAS is the BLAS here (scripts/setup.sh): the count is set, reported back and restored by the scope.
+TEST(BlasThreads, TheScopeSetsOneThreadAndRestoresTheCount) {
+  const int before = set_blas_threads(3);
+  ASSERT_GT(before, 0) << "OpenBLAS's thread count was not found: is libopenblas0-pthread the system BLAS?";
+  {
+    const ScopedBlasThreads one;
+    EXPECT_EQ(set_blas_threads(1), 1);
+  }
+  EXPECT_EQ(set_blas_threads(before), 3);
+  EXPECT_EQ(set_blas_threads(0), 0);  // refused: nothing set
+}
+
+}  // namespace
+}  // namespace hooke
