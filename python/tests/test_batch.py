@@ -165,12 +165,17 @@ def test_hooke_batch_on_the_command_line(meshes, tmp_path):
 
     table = tmp_path / "study.csv"
     table.write_text(f"name,mesh,young,poisson,method\nc,{meshes / 'cylinder.msh'},14630,0.45,any-nu-tet\n"
-                     f"t,{meshes / 'rectangle_tri.msh'},14630,0.3,any-nu-triangle\n")
+                     f"t,{meshes / 'rectangle_tri.msh'},14630,0.3,any-nu-triangle\n"
+                     f"i,{meshes / 'cylinder.msh'},14630,0.45,identify\n")
     run = subprocess.run([cli, "batch", str(table), "-o", str(tmp_path / "out"), "--workers", "1", "--quiet"],
                          capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
-    assert "2 jobs: 2 certified, 0 failed" in run.stdout
-    assert len(rows(tmp_path / "out")) == 2
+    assert "3 jobs: 3 certified, 0 failed" in run.stdout
+    table = {r["name"]: r for r in rows(tmp_path / "out")}
+    assert len(table) == 3
+    # The identified model (Eq. 1 from the Eq. 2 fit) carries its held-out error and its certificate.
+    assert table["i"]["method_used"] == "identified" and 0.0 < float(table["i"]["held_out_rms"]) < 0.1
+    assert 0.0 < float(table["i"]["worst_relative_l2"]) < 0.1
     bad = subprocess.run([cli, "batch", str(tmp_path / "missing.csv"), "-o", str(tmp_path / "o2")],
                          capture_output=True, text=True)
     assert bad.returncode == 4 and "missing.csv" in bad.stderr
