@@ -63,7 +63,7 @@ calibrate::CalibratedModel load_model(const ModelSource& in);
 
 /// The time integrator and its options by name, as `simulate` and `view` take them.
 struct IntegratorInput {
-  std::string integrator = "quasi-newton", linear_solver = "cholesky", global_solve = "direct", qn_hessian = "rest";
+  std::string integrator = "quasi-newton", linear_solver = "cholesky", global_solve = "direct", qn_hessian = "auto";
 };
 /// Registers --integrator, --linear-solver, --cg-tolerance, --newton-tolerance, --newton-iterations, --global-solve,
 /// --iterations, --qn-iterations, --qn-tolerance and --qn-hessian on `cmd`: the names bound to `in`, the numbers to

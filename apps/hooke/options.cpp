@@ -177,8 +177,9 @@ void add_integrator_options(CLI::App* cmd, IntegratorInput& in, solve::Simulator
                   "quasi-newton: |residual| / force scale to stop a step")
       ->capture_default_str();
   cmd->add_option("--qn-hessian", in.qn_hessian,
-                  "quasi-newton: initial Hessian, rest (the Newton matrix at rest) or isotropic (a per-node "
-                  "factor, 3x cheaper to solve, more iterations)")
+                  "quasi-newton: initial Hessian, rest (the Newton matrix at rest), isotropic (a per-node "
+                  "factor, 3x cheaper to solve, more iterations) or auto (rest where the model's Hessian is exact, "
+                  "isotropic for the surface model's approximate one)")
       ->capture_default_str();
   cmd->add_option("--linear-solver", in.linear_solver, "Newton steps: cholesky or cg")->capture_default_str();
   cmd->add_option("--cg-tolerance", options.newton.cg_tolerance,

@@ -61,7 +61,7 @@ void define_simulator(py::module_& m) {
            py::arg("iterations") = 10, py::arg("global_solve") = "direct", py::arg("gravity") = py::none(),
            py::arg("damping_mass") = 0.0, py::arg("damping_stiffness") = 0.0, py::arg("cg_tolerance") = 1e-6,
            py::arg("qn_iterations") = solve::QuasiNewtonOptions{}.max_iterations,
-           py::arg("qn_tolerance") = solve::QuasiNewtonOptions{}.tolerance, py::arg("qn_hessian") = "rest",
+           py::arg("qn_tolerance") = solve::QuasiNewtonOptions{}.tolerance, py::arg("qn_hessian") = "auto",
            "Simulator(problem, integrator='quasi-newton', ...): integrator one of quasi-newton (every model, at most "
            "qn_iterations L-BFGS iterations per step), symplectic-euler, velocity-verlet, implicit-euler, "
            "implicit-euler-linearised, local-global (springs only), quasi-static; masses from the model; gravity "

@@ -31,7 +31,9 @@ GlobalSolve global_solve_from_name(std::string_view name) {
 QuasiNewtonHessian quasi_newton_hessian_from_name(std::string_view name) {
   if (name == "rest") return QuasiNewtonHessian::kRest;
   if (name == "isotropic") return QuasiNewtonHessian::kIsotropic;
-  throw InvalidArgument("unknown quasi-newton initial Hessian '" + std::string(name) + "' (use rest or isotropic)");
+  if (name == "auto") return QuasiNewtonHessian::kAuto;
+  throw InvalidArgument("unknown quasi-newton initial Hessian '" + std::string(name) +
+                        "' (use auto, rest or isotropic)");
 }
 
 namespace detail {

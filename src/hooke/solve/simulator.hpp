@@ -37,7 +37,7 @@ struct QuasiNewtonOptions {
   /// curvature pairs kept (Liu et al. 2017 use 5), carried across steps while dt and the fixed DOFs stay; >= 0,
   /// default 5
   int history = 5;
-  QuasiNewtonHessian initial_hessian = QuasiNewtonHessian::kRest;  ///< default rest
+  QuasiNewtonHessian initial_hessian = QuasiNewtonHessian::kAuto;  ///< default auto (rest for exact Hessians)
   double isotropic_scale =
       2.0;  ///< isotropic: the factor on the blocks' traces / dim, default 2 (measured best of 1-3)
 };

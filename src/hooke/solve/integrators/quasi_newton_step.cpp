@@ -128,7 +128,9 @@ class QuasiNewtonStep final : public IntegratorStep {
     const double k_factor = 1.0 + m_s.dyn.stiffness_damping / dt;
     const int d = m_s.model().dim();
     const std::vector<char>& fixed = m_s.problem.fixed_dofs;
-    const bool kronecker = m_opt.initial_hessian == QuasiNewtonHessian::kIsotropic && m_s.axes_alike();
+    const bool isotropic = m_opt.initial_hessian == QuasiNewtonHessian::kIsotropic ||
+                           (m_opt.initial_hessian == QuasiNewtonHessian::kAuto && !m_s.model().exact_hessian());
+    const bool kronecker = isotropic && m_s.axes_alike();
     m_components = kronecker ? d : 1;
     for (bool project : {false, true}) {
       model::HessianAssembly& a = m_s.hessian_assembly();
