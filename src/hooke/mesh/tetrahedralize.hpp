@@ -27,12 +27,16 @@ struct TetrahedralizeOptions {
   /// volume V: (6 sqrt(2) V)^(1/3).) Inside the body; at a kept surface the scan's triangles set the size.
   double max_size = 0.0;
   SurfaceMeshing surface = SurfaceMeshing::kKeep;
-  double fineness = 0.5;       ///< Netgen: 0 (coarse) .. 1 (fine): refinement at curvature and small features
-  double grading = 0.3;        ///< Netgen: 0 (uniform) .. 1 (aggressive grading from small to large elements)
-  int optimisation_steps = 3;  ///< Netgen: volume mesh optimisation passes
+  double fineness = 0.5;  ///< Netgen: 0 (coarse) .. 1 (fine): refinement at curvature and small features
+  double grading = 0.3;   ///< Netgen: 0 (uniform) .. 1 (aggressive grading from small to large elements)
+  /// Netgen: volume mesh optimisation passes, default 1. Measured on the 2-core machine (bench_tetrahedralize.cpp,
+  /// medians of 3, 2026-12-04): Stanford bunny (37 706 surface nodes) 0 passes 24 s with 1 003 slivers, 1 pass 35.6 s
+  /// (345 027 tets, radius ratio min 0.048, no sliver), 3 passes 56.3 s (322 581 tets, min 0.18, no sliver); CGAL's
+  /// femur 4.8 s / 6.0 s at 1 / 3 passes with 33 / 32 slivers on its thin scan triangles either way
+  int optimisation_steps = 1;
   /// Quality floor: a tet with radius_ratio below it fails the meshing, naming it; 0 (the default) reports only.
   /// Off by default because a kept scan bounds the quality of the tets on its thin triangles, and Netgen leaves a
-  /// few interior slivers that its optimisation does not remove (CGAL's femur: 32 of 60 783 tets below 0.01, the
+  /// few interior slivers that its optimisation does not remove (CGAL's femur: 33 of 60 809 tets below 0.01, the
   /// worst 0.0002 on a scan triangle of quality 0.012); the model built on the mesh is then checked by what it does
   /// (certificate, inversion guard), docs/meshing.md.
   double min_radius_ratio = 0.0;
