@@ -12,18 +12,26 @@ namespace {
 
 VecX rest_of(const mesh::Mesh& m) { return Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size()); }
 
+// Comparisons need the equilibria and their stability, not the smallest eigenvalue's value (minutes of shifted
+// factorisations on a scan's 300 000 tets).
+solve::StaticOptions statics() {
+  solve::StaticOptions o;
+  o.estimate_min_eigenvalue = false;
+  return o;
+}
+
 // The FEM reference under `load` (linear: one linear solve; otherwise Newton with the stability check).
 solve::StaticResult solve_fem(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
                               material::Law law, const LoadCase& load) {
   model::Problem problem = model::make_problem(fem::elastic_model(mesh, materials, law));
   apply(load, problem);
-  return law == material::Law::kLinear ? solve::linear_static(problem) : solve::static_equilibrium(problem);
+  return law == material::Law::kLinear ? solve::linear_static(problem) : solve::static_equilibrium(problem, statics());
 }
 
 solve::StaticResult solve_springs(const mesh::Mesh& mesh, const calibrate::SpringModel& springs, const LoadCase& load) {
   model::Problem problem = model::make_problem(calibrate::make_model(mesh, springs));
   apply(load, problem);
-  return solve::static_equilibrium(problem);
+  return solve::static_equilibrium(problem, statics());
 }
 
 // Node errors of c.spring_positions against c.fem_positions; `rest` are the spring model's rest positions.
@@ -113,7 +121,7 @@ Comparison compare_calibrated(const calibrate::CalibratedModel& model, const Com
     const solve::StaticResult fem = solve_fem(model.mesh, {model.material}, options.reference, c.load);
     model::Problem problem = model::make_problem(built.model);
     apply(c.load, problem);
-    const solve::StaticResult msm = solve::static_equilibrium(problem);
+    const solve::StaticResult msm = solve::static_equilibrium(problem, statics());
     c.fem_positions = c.fem_mesh_positions = fem.positions;
     c.fem_mesh = model.mesh;
     c.spring_positions = msm.positions;
@@ -147,9 +155,9 @@ Comparison compare_calibrated(const calibrate::CalibratedModel& model, const Com
     for (int i : c.load.top_nodes) centre += surface.nodes.row(i).transpose() / c.load.top_nodes.size();
     problem.interaction = model::Interaction{centre, Vec3(c.load.direction), mesh::bounding_box_diagonal(surface)};
   }
-  solve::StaticOptions statics;
-  statics.newton.max_iterations = 100;
-  const solve::StaticResult msm = solve::static_equilibrium(problem, statics);
+  solve::StaticOptions surface_statics = statics();
+  surface_statics.newton.max_iterations = 100;
+  const solve::StaticResult msm = solve::static_equilibrium(problem, surface_statics);
   c.fem_mesh_positions = fem.positions;
   c.fem_mesh = tets;
   c.fem_positions = fem.positions.segment(3 * offset, 3 * n);

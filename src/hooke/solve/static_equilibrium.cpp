@@ -243,7 +243,8 @@ StaticResult static_equilibrium(const model::Problem& problem, const StaticOptio
     rep.message = std::move(message);
     rep.load_factor = lambda_stable;
     rep.residual = newton.residual(x_stable, lambda_stable);
-    if (options.check_stability && map.size() > 0)
+    if (options.check_stability && map.size() > 0 &&
+        (options.estimate_min_eigenvalue || status != SolveStatus::kConverged))
       rep.min_eigenvalue = smallest_eigenvalue(objective.free_tangent(x_stable, map));
     rep.factorization_seconds += newton.newton.factorization_seconds();
     result.positions = x_stable;
