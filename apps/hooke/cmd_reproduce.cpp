@@ -102,10 +102,10 @@ Action add_reproduce_command(CLI::App& app) {
       throw InvalidArgument("unknown paper '" + o->paper + "' (available: lloyd2007, arnab2008, nu-range)");
     // One transaction (issue 16): report and figures are written into a staging folder and moved into place with the
     // report (.md) last, so a run killed at any instant leaves the previous report whole, with its figures.
-    OutputTransaction outputs;
-    const std::string staging = outputs.stage_folder(o->out_dir).string();
     if (!o->scheduler.empty() && o->paper != "nu-range")
       throw InvalidArgument("--scheduler runs the nu-range study only; " + o->paper + " runs here");
+    OutputTransaction outputs;
+    const std::string staging = outputs.stage_folder(o->out_dir).string();
     if (o->paper == "nu-range") {
       const LogSink previous = set_log_sink([](LogLevel level, std::string_view message) {
         std::fprintf(level >= LogLevel::kWarning ? stderr : stdout, "%.*s\n", static_cast<int>(message.size()),

@@ -41,7 +41,8 @@ int run_python(const std::vector<std::string>& args) {
   for (auto& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
   setenv("MPLBACKEND", "Agg", 1);
-  use_build_tree_package();
+  static const bool path_set = (use_build_tree_package(), true);  // once: a command may start Python twice
+  (void)path_set;
   pid_t pid = 0;
   if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0)
     throw IoError("cannot start " + all[0] + " (scripts/setup.sh installs Debian's python3)");

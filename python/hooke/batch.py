@@ -218,8 +218,8 @@ def run_job(job, out_dir):
             else:
                 model = hooke.calibrate(mesh, material, job["method"], density=job["density"])
         result["method_used"] = model.method
-        loads = [name for name in job["loads"].replace(",", ";").split(";") if name.strip()]
-        cases = hooke.certify(model, job["strain"], loads=[name.strip() for name in loads])
+        loads = [name.strip() for name in job["loads"].replace(",", ";").split(";") if name.strip()]
+        cases = hooke.certify(model, job["strain"], loads=loads)
         for case in cases:
             result["relative_l2_" + case["load"]] = case["relative_l2"]
         result["worst_relative_l2"] = max(case["relative_l2"] for case in cases)

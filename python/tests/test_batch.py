@@ -212,3 +212,21 @@ def test_reproduce_nu_range_on_dask_writes_the_serial_report(tmp_path):
         assert len(specs) == 1
     assert [p.read_bytes() for p in sorted((a / "figures").glob("*.json"))] == \
         [p.read_bytes() for p in sorted((b / "figures").glob("*.json"))]
+
+
+def test_python_nu_range_on_dask_writes_the_report(meshes, tmp_path, client):
+    # hooke.batch.nu_range from Python, on the test's cluster: the same rows as the library's serial tasks.
+    import json
+
+    from hooke import _hooke
+
+    options = json.loads(_hooke._nu_range_default_options())
+    options.update(poisson=[0.3], meshes=["cylinder"], large_strain=0.0)
+    options = json.dumps(options)
+    picks = batch.nu_range(tmp_path, meshes, options, client=client, progress=False)
+    report = json.loads((tmp_path / "nu_range.json").read_text())
+    serial = [row for t in _hooke._nu_range_tasks(str(meshes), options)
+              for row in json.loads(_hooke._nu_range_task(str(meshes), options, t))]
+    assert report["rows"] == serial and len(serial) == 3 * 5
+    assert len(picks) == 1 and picks[0].startswith("tet, nu = 0.3: ")
+    assert (tmp_path / "method_table.inc").exists() and (tmp_path / "nu_range.md").exists()
