@@ -292,10 +292,12 @@ bool PhysicsLoop::run_script_commands() {
         }
         default:  // drawing: the front end takes it with the state of this time
           if (!m_front_end_draws) break;
-          ++m_script_next;
           stage();
           {
+            // The command moves from the script to the front end under one lock: script_finished() never sees it
+            // in neither place (the front end would stop before a last `quit` or `screenshot`).
             std::lock_guard lock(m_mutex);
+            ++m_script_next;
             m_pending_drawing.push_back(c);
             m_waiting_for_drawing = true;
           }
