@@ -3,9 +3,10 @@
 // link per hooke spring, clamped nodes pinned (mass 0), gravity, the same dt = 1 ms. Bullet's links are
 // position-based constraints with a stiffness coefficient in [0, 1], not N/m: kLST = 1 and 10 position
 // iterations (its default is 1), matching local/global's 10 iterations. Reported:
-// - BM_PeerStep: ms/step of Bullet and of hooke's local/global with the direct and the Chebyshev-Jacobi global
-//   step (medians over the same number of steps, measured in turn in the same benchmark) and the ratios
-//   bullet_over_hooke, bullet_over_cheb (> 1: hooke is faster);
+// - BM_PeerStep: ms/step of Bullet, of hooke's local/global with the direct and the Chebyshev-Jacobi global
+//   step and of its quasi-newton integrator (the real-time default; medians over the same number of steps,
+//   measured in turn in the same benchmark) and the ratios bullet_over_hooke, bullet_over_cheb, bullet_over_qn
+//   (> 1: hooke is faster);
 // - BM_PeerAccuracy: both settle under gravity with damping; the distance of each settled state to the static
 //   equilibrium of the calibrated spring model, relative to that equilibrium's largest displacement.
 // Run: build/release/bench/hooke_bench --benchmark_filter=Peer
@@ -77,10 +78,12 @@ class BulletCylinder {
   std::unique_ptr<btSoftBody> m_body;
 };
 
-solve::Simulator local_global(const Cylinder& c, double mass_damping,
-                              solve::GlobalSolve global_solve = solve::GlobalSolve::kDirect) {
+// hooke's simulator of the cylinder (local/global unless told), mass damping alpha in 1/s.
+solve::Simulator hooke_simulator(const Cylinder& c, double mass_damping,
+                                 solve::GlobalSolve global_solve = solve::GlobalSolve::kDirect,
+                                 solve::Integrator integrator = solve::Integrator::kLocalGlobal) {
   solve::SimulatorOptions o;
-  o.integrator = solve::Integrator::kLocalGlobal;
+  o.integrator = integrator;
   o.global_solve = global_solve;
   solve::Dynamics d = c.dynamics;
   d.mass_damping = mass_damping;
@@ -96,12 +99,14 @@ void BM_PeerStep(benchmark::State& state) {
   const Cylinder& c = bench::cached<Cylinder>(static_cast<int>(state.range(0)));
   const double dt = 1e-3;
   BulletCylinder bullet(c, 0.0);
-  solve::Simulator ours = local_global(c, 0.0);
-  solve::Simulator chebyshev = local_global(c, 0.0, solve::GlobalSolve::kChebyshev);
+  solve::Simulator ours = hooke_simulator(c, 0.0);
+  solve::Simulator chebyshev = hooke_simulator(c, 0.0, solve::GlobalSolve::kChebyshev);
+  solve::Simulator quasi_newton = hooke_simulator(c, 0.0, solve::GlobalSolve::kDirect, solve::Integrator::kQuasiNewton);
   bullet.step(dt);
   ours.step(dt);  // first step: factorisation
   chebyshev.step(dt);
-  std::vector<double> bullet_ms, hooke_ms, chebyshev_ms;
+  quasi_newton.step(dt);
+  std::vector<double> bullet_ms, hooke_ms, chebyshev_ms, quasi_newton_ms;
   auto ms = [](auto t0, auto t1) { return std::chrono::duration<double, std::milli>(t1 - t0).count(); };
   for (auto _ : state) {
     auto t0 = std::chrono::steady_clock::now();
@@ -111,10 +116,13 @@ void BM_PeerStep(benchmark::State& state) {
     auto t2 = std::chrono::steady_clock::now();
     chebyshev.step(dt);
     auto t3 = std::chrono::steady_clock::now();
+    quasi_newton.step(dt);
+    auto t4 = std::chrono::steady_clock::now();
     bullet_ms.push_back(ms(t0, t1));
     hooke_ms.push_back(ms(t1, t2));
     chebyshev_ms.push_back(ms(t2, t3));
-    state.SetIterationTime(std::chrono::duration<double>(t3 - t0).count());
+    quasi_newton_ms.push_back(ms(t3, t4));
+    state.SetIterationTime(std::chrono::duration<double>(t4 - t0).count());
   }
   state.counters["nodes"] = c.mesh.node_count();
   state.counters["links"] = static_cast<double>(c.springs->pairs().size());
@@ -123,6 +131,8 @@ void BM_PeerStep(benchmark::State& state) {
   state.counters["bullet_over_hooke"] = median(bullet_ms) / median(hooke_ms);
   state.counters["hooke_cheb_ms"] = median(chebyshev_ms);
   state.counters["bullet_over_cheb"] = median(bullet_ms) / median(chebyshev_ms);
+  state.counters["hooke_qn_ms"] = median(quasi_newton_ms);
+  state.counters["bullet_over_qn"] = median(bullet_ms) / median(quasi_newton_ms);
 }
 
 void BM_PeerAccuracy(benchmark::State& state) {
@@ -133,18 +143,22 @@ void BM_PeerAccuracy(benchmark::State& state) {
     if (!c.problem.fixed_dofs[static_cast<size_t>(i)])
       statics.external_force(i) = -9.81 * c.dynamics.mass(i) * (i % 3 == 2);
   const int steps = 800;
-  VecX ours_x, chebyshev_x, bullet_x;
+  VecX ours_x, chebyshev_x, quasi_newton_x, bullet_x;
   for (auto _ : state) {
-    solve::Simulator ours = local_global(c, 40.0);  // alpha = 40 1/s
-    solve::Simulator chebyshev = local_global(c, 40.0, solve::GlobalSolve::kChebyshev);
+    solve::Simulator ours = hooke_simulator(c, 40.0);  // alpha = 40 1/s
+    solve::Simulator chebyshev = hooke_simulator(c, 40.0, solve::GlobalSolve::kChebyshev);
+    solve::Simulator quasi_newton =
+        hooke_simulator(c, 40.0, solve::GlobalSolve::kDirect, solve::Integrator::kQuasiNewton);
     BulletCylinder bullet(c, 0.05);  // kDP = 0.05 per step
     for (int k = 0; k < steps; ++k) {
       ours.step(1e-3);
       chebyshev.step(1e-3);
+      quasi_newton.step(1e-3);
       bullet.step(1e-3);
     }
     ours_x = ours.positions();
     chebyshev_x = chebyshev.positions();
+    quasi_newton_x = quasi_newton.positions();
     bullet_x = bullet.positions();
   }
   // The reference: the static equilibrium of the calibrated model, certified by its force residual (at most
@@ -166,7 +180,7 @@ void BM_PeerAccuracy(benchmark::State& state) {
     return r.norm() / statics.external_force.norm();
   };
   if (!by_newton) {
-    solve::Simulator settle = local_global(c, 40.0, solve::GlobalSolve::kChebyshev);
+    solve::Simulator settle = hooke_simulator(c, 40.0, solve::GlobalSolve::kChebyshev);
     for (int k = 0; k < 20000 && (k % 100 != 0 || relative_residual(settle.positions()) > 1e-9); ++k) settle.step(1e-3);
     reference.positions = settle.positions();
   }
@@ -191,6 +205,7 @@ void BM_PeerAccuracy(benchmark::State& state) {
   state.counters["static_sag_mm"] = 1e3 * scale;
   state.counters["hooke_lg_error"] = ours_error;
   state.counters["hooke_cheb_error"] = chebyshev_error;
+  state.counters["hooke_qn_error"] = distance(quasi_newton_x);
   state.counters["bullet_error"] = bullet_error;
 }
 

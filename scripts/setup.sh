@@ -5,7 +5,7 @@
 #              and Dask distributed with pandas (hooke batch, studies beyond one machine)
 #              and the real scanned surfaces the meshing tests use (CGAL's sample data in libcgal-demo, not linked)
 #   --meshing  also gmsh and tetgen, needed only to regenerate the committed meshes in data/meshes
-#   --bench    also Bullet, the benchmark peer of bench/
+#   --bench    also Bullet, a benchmark peer of bench/ (the other, VegaFEM, needs only g++: scripts/build_vegafem.sh)
 set -euo pipefail
 
 core=(

@@ -128,21 +128,6 @@ struct Drag {
   }
 };
 
-// Positions after 1 + steps steps of implicit Euler with Newton converged to 1e-12: the accuracy reference.
-VecX converged_reference(const model::Problem& problem, const solve::Dynamics& dynamics, const Drag& drag, double dt,
-                         int steps) {
-  solve::SimulatorOptions o;
-  o.integrator = solve::Integrator::kImplicitEuler;
-  o.newton.tolerance = 1e-12;
-  o.newton.max_iterations = 200;
-  solve::Simulator sim(problem, dynamics, o);
-  for (int k = 0; k <= steps; ++k) {
-    drag.before_step(sim, dt);
-    sim.step(dt);
-  }
-  return sim.positions();
-}
-
 // One row's run: an untimed first step, then `steps` timed ones, each checked (untimed) afterwards. `why` says
 // where the run left the admissible set (empty when it did not); the timing is then incomplete.
 StepTiming timed_run(solve::Simulator& sim, const Run& run, const Drag& drag, double dt, int steps, std::string& why) {
@@ -172,15 +157,6 @@ StepTiming timed_run(solve::Simulator& sim, const Run& run, const Drag& drag, do
   return t;
 }
 
-double relative_error(const VecX& x, const VecX& reference, const VecX& rest) {
-  double error = 0.0, scale = 0.0;
-  for (Eigen::Index i = 0; i < x.size() / 3; ++i) {
-    error = std::max(error, (x.segment<3>(3 * i) - reference.segment<3>(3 * i)).norm());
-    scale = std::max(scale, (reference.segment<3>(3 * i) - rest.segment<3>(3 * i)).norm());
-  }
-  return scale > 0.0 ? error / scale : 0.0;
-}
-
 SpringThroughput spring_throughput(const calibrate::CalibratedModel& cm, double triad) {
   const springs::SpringBlock springs(3, cm.springs.pairs, cm.springs.stiffness, cm.springs.rest_length);
   const VecX x = Eigen::Map<const VecX>(cm.mesh.nodes.data(), cm.mesh.nodes.size()) * 1.01;
@@ -199,6 +175,30 @@ SpringThroughput spring_throughput(const calibrate::CalibratedModel& cm, double 
 }
 
 }  // namespace
+
+VecX converged_reference(const model::Problem& problem, const solve::Dynamics& dynamics, double dt, int steps,
+                         const std::vector<int>& probe_nodes, double drag, double ramp_s) {
+  const Drag probe{probe_nodes, drag, ramp_s};
+  solve::SimulatorOptions o;
+  o.integrator = solve::Integrator::kImplicitEuler;
+  o.newton.tolerance = 1e-12;
+  o.newton.max_iterations = 200;
+  solve::Simulator sim(problem, dynamics, o);
+  for (int k = 0; k <= steps; ++k) {
+    probe.before_step(sim, dt);
+    sim.step(dt);
+  }
+  return sim.positions();
+}
+
+double relative_error(const VecX& x, const VecX& reference, const VecX& rest) {
+  double error = 0.0, scale = 0.0;
+  for (Eigen::Index i = 0; i < x.size() / 3; ++i) {
+    error = std::max(error, (x.segment<3>(3 * i) - reference.segment<3>(3 * i)).norm());
+    scale = std::max(scale, (reference.segment<3>(3 * i) - rest.segment<3>(3 * i)).norm());
+  }
+  return scale > 0.0 ? error / scale : 0.0;
+}
 
 DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& options) {
   if (options.steps < 1) throw InvalidArgument("the benchmark needs at least one step per integrator");
@@ -266,7 +266,8 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
         t.method = method;
         if (!is_explicit(run.integrator) && run.integrator != solve::Integrator::kQuasiStatic && size < 2) {
           if (reference.size() == 0)
-            reference = converged_reference(problem, dynamics, drag, options.dt, options.steps);
+            reference = converged_reference(problem, dynamics, options.dt, options.steps, drag.nodes, drag.distance,
+                                            drag.ramp_s);
           t.error_vs_converged = relative_error(sim->positions(), reference, problem.model->rest_positions());
         }
         report.steps.push_back(t);

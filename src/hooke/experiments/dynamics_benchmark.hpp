@@ -5,6 +5,8 @@
 /// probe dragging the top's centre sideways; every row's error against a tightly converged implicit step.
 #include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/core/types.hpp>
+#include <hooke/model/problem.hpp>
+#include <hooke/solve/simulator.hpp>
 #include <string>
 #include <vector>
 
@@ -35,6 +37,16 @@ struct DynamicsBenchmarkOptions {
   /// rows to run by name (e.g. "quasi-newton", "local-global (chebyshev)"; empty = all)
   std::vector<std::string> integrators;
 };
+
+/// The benchmark's accuracy reference: positions after 1 + `steps` implicit-Euler steps of `dt` s with Newton
+/// converged to 1e-12; with `probe_nodes`, a probe holds them and drags them along x to `drag` m, linearly until
+/// `ramp_s` s of simulated time, then holds. @throws solve errors (a step that does not converge)
+VecX converged_reference(const model::Problem& problem, const solve::Dynamics& dynamics, double dt, int steps,
+                         const std::vector<int>& probe_nodes = {}, double drag = 0.0, double ramp_s = 1.0);
+
+/// Largest node distance between `x` and `reference` (3D positions, m) relative to the reference's largest
+/// displacement from `rest` (0 when the reference did not move): the benchmark's error measure.
+double relative_error(const VecX& x, const VecX& reference, const VecX& rest);
 
 /// Spring-force throughput on one mesh beside the in-run bandwidth bound.
 struct SpringThroughput {
