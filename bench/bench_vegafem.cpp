@@ -42,17 +42,13 @@ using experiments::quantile;
 
 constexpr double kYoung = 14630.0, kPoisson = 0.45, kDensity = 1000.0, kDt = 1e-3;
 constexpr int kSteps = 300;
-constexpr double kDrag = 2e-3, kRamp = 0.5 * (kSteps + 1) * kDt;  // m, s: `hooke bench`'s probe
-
-// The probe's offset along x at the end of a step that ends at time t.
-double probe_offset(double t) { return kDrag * std::min(1.0, t / kRamp); }
 
 // One hooke model of the benchmark cylinder: its problem (bottom clamped) and dynamics (lumped masses, gravity).
 struct HookeCylinder {
   calibrate::CalibratedModel cm;
   model::Problem problem;
   solve::Dynamics dynamics;
-  std::vector<int> probe;
+  experiments::BenchmarkDrag probe;  // `hooke bench`'s: 2 mm along x over half the run's simulated time
   HookeCylinder(int size, const std::string& method) {
     material::Material m;
     m.law = material::Law::kStVK;
@@ -65,7 +61,7 @@ struct HookeCylinder {
     problem = model::make_problem(calibrate::build_model(cm).model);
     model::fix_nodes(problem, experiments::make_load_case(cm.mesh, experiments::LoadKind::kStretch, 0.0).fixed_nodes);
     dynamics = {cm.masses, Vec3(0.0, 0.0, -9.81), 0.0, 0.0};
-    probe = experiments::benchmark_probe_nodes(cm.mesh);
+    probe = {experiments::benchmark_probe_nodes(cm.mesh), 2e-3, 0.5 * (kSteps + 1) * kDt};
   }
   /// hooke's simulator of this model with `integrator`'s default options.
   solve::Simulator simulator(solve::Integrator integrator) const {
@@ -73,16 +69,9 @@ struct HookeCylinder {
     o.integrator = integrator;
     return solve::Simulator(problem, dynamics, o);
   }
-  VecX reference() const {
-    return experiments::converged_reference(problem, dynamics, kDt, kSteps, probe, kDrag, kRamp);
-  }
+  VecX reference() const { return experiments::converged_reference(problem, dynamics, kDt, kSteps, probe); }
   // The probe's position at the end of the next step (set before it, untimed, as `hooke bench` does).
-  void drag(solve::Simulator& sim) const {
-    solve::Probe p;
-    p.nodes = probe;
-    p.offset = Vec3(probe_offset(sim.time() + kDt), 0.0, 0.0);
-    sim.set_probe(p);
-  }
+  void drag(solve::Simulator& sim) const { probe.before_step(sim, kDt); }
 };
 
 // Vega's force model evaluated at u + d, d the probe's displacement (nonzero at its x DOFs only): with the
@@ -132,16 +121,16 @@ class VegaCylinder {
     m_forces = std::make_unique<StVKInternalForces>(m_mesh.get(), m_abcd.get());
     m_stiffness = std::make_unique<StVKStiffnessMatrix>(m_forces.get());
     m_stvk = std::make_unique<StVKForceModel>(m_forces.get(), m_stiffness.get());
-    m_model = std::make_unique<ProbedForceModel>(m_stvk.get(), h.probe);
+    m_model = std::make_unique<ProbedForceModel>(m_stvk.get(), h.probe.nodes);
     const int r = 3 * mesh.node_count();
     SparseMatrixOutline outline(r, h.dynamics.mass.data());
     m_mass = std::make_unique<::SparseMatrix>(&outline);
     std::vector<char> constrained = h.problem.fixed_dofs;
-    for (int node : h.probe)
+    for (int node : h.probe.nodes)
       for (int a = 0; a < 3; ++a) constrained[static_cast<size_t>(3 * node + a)] = true;
     for (int i = 0; i < r; ++i)
       if (constrained[static_cast<size_t>(i)]) m_constrained.push_back(i);
-    m_probe = h.probe;
+    m_probe = h.probe;  // the protocol and its nodes
     m_integrator = std::make_unique<ImplicitBackwardEulerSparse>(
         r, kDt, m_mass.get(), m_model.get(), static_cast<int>(m_constrained.size()), m_constrained.data(), 0.0, 0.0,
         newton_iterations, newton_epsilon);
@@ -156,13 +145,13 @@ class VegaCylinder {
 
   void step() {
     m_time += kDt;
-    m_model->set_offset(probe_offset(m_time));
+    m_model->set_offset(m_probe.offset(m_time));
     m_integrator->SetExternalForces(m_gravity.data());
     m_integrator->DoTimestep();
   }
   VecX positions() const {
     VecX x = m_rest + Eigen::Map<const VecX>(m_integrator->Getq(), m_rest.size());
-    for (int node : m_probe) x(3 * node) += m_model->offset();
+    for (int node : m_probe.nodes) x(3 * node) += m_model->offset();
     return x;
   }
 
@@ -177,7 +166,7 @@ class VegaCylinder {
   std::vector<int> m_constrained;
   std::unique_ptr<ImplicitBackwardEulerSparse> m_integrator;
   std::vector<double> m_gravity;
-  std::vector<int> m_probe;
+  experiments::BenchmarkDrag m_probe;
   double m_time = 0.0;
   VecX m_rest;
 };

@@ -114,23 +114,10 @@ std::string inadmissible(const solve::Simulator& sim, const solve::StepReport& r
   return {};
 }
 
-// The protocol every row runs: before each step the probe's offset along x, drag x min(1, t / (T / 2)) at the
-// step's end time t, T the simulated time of 1 + steps implicit steps.
-struct Drag {
-  std::vector<int> nodes;
-  double distance = 0.0, ramp_s = 1.0;
-  void before_step(solve::Simulator& sim, double dt) const {
-    if (nodes.empty()) return;
-    solve::Probe p;
-    p.nodes = nodes;
-    p.offset = Vec3(distance * std::min(1.0, (sim.time() + dt) / ramp_s), 0.0, 0.0);
-    sim.set_probe(p);
-  }
-};
-
 // One row's run: an untimed first step, then `steps` timed ones, each checked (untimed) afterwards. `why` says
 // where the run left the admissible set (empty when it did not); the timing is then incomplete.
-StepTiming timed_run(solve::Simulator& sim, const Run& run, const Drag& drag, double dt, int steps, std::string& why) {
+StepTiming timed_run(solve::Simulator& sim, const Run& run, const BenchmarkDrag& drag, double dt, int steps,
+                     std::string& why) {
   const bool budgeted = run.integrator == solve::Integrator::kQuasiNewton;
   drag.before_step(sim, dt);
   why = inadmissible(sim, sim.step(dt), 1, budgeted);
@@ -176,9 +163,18 @@ SpringThroughput spring_throughput(const calibrate::CalibratedModel& cm, double 
 
 }  // namespace
 
+double BenchmarkDrag::offset(double t) const { return distance * std::min(1.0, t / ramp_s); }
+
+void BenchmarkDrag::before_step(solve::Simulator& sim, double dt) const {
+  if (nodes.empty()) return;
+  solve::Probe p;
+  p.nodes = nodes;
+  p.offset = Vec3(offset(sim.time() + dt), 0.0, 0.0);
+  sim.set_probe(p);
+}
+
 VecX converged_reference(const model::Problem& problem, const solve::Dynamics& dynamics, double dt, int steps,
-                         const std::vector<int>& probe_nodes, double drag, double ramp_s) {
-  const Drag probe{probe_nodes, drag, ramp_s};
+                         const BenchmarkDrag& probe) {
   solve::SimulatorOptions o;
   o.integrator = solve::Integrator::kImplicitEuler;
   o.newton.tolerance = 1e-12;
@@ -219,7 +215,7 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
       model::Problem problem = model::make_problem(calibrate::build_model(cm).model);
       model::fix_nodes(problem, make_load_case(cm.mesh, LoadKind::kStretch, 0.0).fixed_nodes);
       const solve::Dynamics dynamics{cm.masses, Vec3(0.0, 0.0, -9.81), 0.0, 0.0};
-      Drag drag;
+      BenchmarkDrag drag;
       if (options.drag != 0.0)
         drag = {benchmark_probe_nodes(cm.mesh), options.drag, 0.5 * (options.steps + 1) * options.dt};
       VecX reference;
@@ -266,8 +262,7 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
         t.method = method;
         if (!is_explicit(run.integrator) && run.integrator != solve::Integrator::kQuasiStatic && size < 2) {
           if (reference.size() == 0)
-            reference = converged_reference(problem, dynamics, options.dt, options.steps, drag.nodes, drag.distance,
-                                            drag.ramp_s);
+            reference = converged_reference(problem, dynamics, options.dt, options.steps, drag);
           t.error_vs_converged = relative_error(sim->positions(), reference, problem.model->rest_positions());
         }
         report.steps.push_back(t);

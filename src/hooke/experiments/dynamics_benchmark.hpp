@@ -38,11 +38,23 @@ struct DynamicsBenchmarkOptions {
   std::vector<std::string> integrators;
 };
 
+/// The benchmark's probe protocol: `nodes` held and dragged along x by `distance` m, linearly until `ramp_s` s of
+/// simulated time (the runs use half their simulated time), then held; no probe when `nodes` is empty.
+struct BenchmarkDrag {
+  std::vector<int> nodes;
+  double distance = 0.0;  ///< m
+  double ramp_s = 1.0;    ///< s, > 0
+  /// The offset along x at simulated time t (s), m.
+  double offset(double t) const;
+  /// Sets `sim`'s probe to the offset at the end of its next step of dt s (nothing without nodes).
+  void before_step(solve::Simulator& sim, double dt) const;
+};
+
 /// The benchmark's accuracy reference: positions after 1 + `steps` implicit-Euler steps of `dt` s with Newton
-/// converged to 1e-12; with `probe_nodes`, a probe holds them and drags them along x to `drag` m, linearly until
-/// `ramp_s` s of simulated time, then holds. @throws solve errors (a step that does not converge)
+/// converged to 1e-12, the probe following `probe` before each step. @throws solve errors (a step that does not
+/// converge)
 VecX converged_reference(const model::Problem& problem, const solve::Dynamics& dynamics, double dt, int steps,
-                         const std::vector<int>& probe_nodes = {}, double drag = 0.0, double ramp_s = 1.0);
+                         const BenchmarkDrag& probe = {});
 
 /// Largest node distance between `x` and `reference` (3D positions, m) relative to the reference's largest
 /// displacement from `rest` (0 when the reference did not move): the benchmark's error measure.
