@@ -32,6 +32,13 @@ CalibratedModel surface_model() {
   return calibrate_model(mesh::uv_sphere_surface(6, 10, 0.05), {material::Law::kLinear, 1000.0, 0.3}, o);
 }
 
+// A cube's edges and corners are creases: their anchors carry a normal cone (11 entries per row).
+CalibratedModel cube_surface_model() {
+  ModelOptions o;
+  o.method = "surface";
+  return calibrate_model(mesh::cube_surface(3, 0.1), {material::Law::kLinear, 1000.0, 0.45}, o);
+}
+
 void expect_same(const CalibratedModel& a, const CalibratedModel& b) {
   EXPECT_EQ(a.method, b.method);
   EXPECT_EQ(a.equation, b.equation);
@@ -52,6 +59,7 @@ void expect_same(const CalibratedModel& a, const CalibratedModel& b) {
   ASSERT_EQ(a.surface.has_value(), b.surface.has_value());
   if (a.surface) {
     EXPECT_TRUE(a.surface->normals == b.surface->normals);
+    EXPECT_TRUE(a.surface->normal_cones == b.surface->normal_cones);
     EXPECT_TRUE(a.surface->k_normal == b.surface->k_normal);
     EXPECT_TRUE(a.surface->k_shear == b.surface->k_shear);
     EXPECT_TRUE(a.surface->k_bulk == b.surface->k_bulk);
@@ -66,7 +74,9 @@ void expect_same(const CalibratedModel& a, const CalibratedModel& b) {
 class ModelFileRoundTrip : public testing::TestWithParam<std::string> {};
 
 TEST_P(ModelFileRoundTrip, WriteReadIsBitForBit) {
-  const CalibratedModel a = GetParam() == "surface" ? surface_model() : tet_model(GetParam());
+  const CalibratedModel a = GetParam() == "surface"        ? surface_model()
+                            : GetParam() == "surface-cube" ? cube_surface_model()
+                                                           : tet_model(GetParam());
   const CalibratedModel b = parse_model(model_json(a), "round trip");
   expect_same(a, b);
   // and the model built from the file has the same forces as the one built from the calibration
@@ -76,7 +86,26 @@ TEST_P(ModelFileRoundTrip, WriteReadIsBitForBit) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, ModelFileRoundTrip,
-                         testing::Values("lloyd-tet", "lloyd-tet-volume", "stiffness-fit", "any-nu-tet", "surface"));
+                         testing::Values("lloyd-tet", "lloyd-tet-volume", "stiffness-fit", "any-nu-tet", "surface",
+                                         "surface-cube"));
+
+TEST(ModelFile, AnchorRowsHaveANormalAndOptionallyACone) {
+  const std::string text = model_json(cube_surface_model());
+  // the smooth face centres write 5 entries, the crease nodes 11
+  EXPECT_NE(text.find("\"anchors\""), std::string::npos);
+  const std::regex eleven(R"(\n      \[[^\]\n]*(, [^\],\n]+){10}\])");
+  EXPECT_TRUE(std::regex_search(text, eleven));
+  // a row of another length is refused naming it
+  const std::string bad = std::regex_replace(text, std::regex(R"(("anchors": \[\n      \[[^,]+),)"), "$1, 1.0,",
+                                             std::regex_constants::format_first_only);
+  ASSERT_NE(bad, text);
+  try {
+    parse_model(bad, "bad.json");
+    ADD_FAILURE() << "a 6- or 12-entry anchor row was read";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("surface.anchors[0]"), std::string::npos) << e.what();
+  }
+}
 
 TEST(ModelFile, CertificateAndWarningsRoundTrip) {
   CalibratedModel a = tet_model("lloyd-tet");

@@ -2,6 +2,7 @@
 #include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/mesh/reorder.hpp>
+#include <hooke/surface/normal_cone.hpp>
 #include <string>
 
 namespace hooke::calibrate {
@@ -38,14 +39,19 @@ struct Checker {
 
 void validate_surface(const SurfaceTerms& s, const Checker& c, int n) {
   c.per_node("surface.anchors", s.k_normal.size(), n);
-  if (s.k_shear.size() != n || s.normals.rows() != n || s.normals.cols() != 3)
-    c.fail("surface.anchors", "needs K_E, K_G and a normal for each node");
+  if (s.k_shear.size() != n || s.normals.rows() != n || s.normals.cols() != 3 || s.normal_cones.rows() != n ||
+      s.normal_cones.cols() != 6)
+    c.fail("surface.anchors", "needs K_E, K_G, a normal and a normal cone for each node");
   for (int i = 0; i < n; ++i) {
     const std::string where = entry("surface.anchors", i);
     c.non_negative(where, s.k_normal(i), "K_E");
     c.non_negative(where, s.k_shear(i), "K_G");
     if (!s.normals.row(i).allFinite() || std::abs(s.normals.row(i).norm() - 1.0) > 1e-6)
       c.fail(where, "the normal must be a finite unit vector");
+    if (!s.normal_cones.row(i).allFinite()) c.fail(where, "the normal cone must be finite");
+    const Vec3 eig = Eigen::SelfAdjointEigenSolver<Mat3>(surface::unpack_cone(s.normal_cones.row(i))).eigenvalues();
+    if (eig.minCoeff() < -1e-9 || eig.maxCoeff() > 1.0 + 1e-9)
+      c.fail(where, "the normal cone's eigenvalues must lie in [0, 1]");
   }
   for (int a = 0; a < 3; ++a) c.finite("surface.centre", s.centre(a), "the centre");
   if (!s.volume_penalty) return;
@@ -142,6 +148,7 @@ CalibratedModel permute_nodes(const CalibratedModel& model, const std::vector<in
     for (int k = 0; k < n; ++k) {
       const int i = new_to_old[static_cast<size_t>(k)];
       s.normals.row(k) = o.normals.row(i);
+      s.normal_cones.row(k) = o.normal_cones.row(i);
       s.k_normal(k) = o.k_normal(i);
       s.k_shear(k) = o.k_shear(i);
       if (s.volume_penalty) {

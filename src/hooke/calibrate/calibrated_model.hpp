@@ -19,6 +19,7 @@ struct SurfaceTerms {
   Vec3 centre = Vec3::Zero();  ///< object centre c of the radial discretisation, m
   surface::AnchorLaw anchor_law = surface::AnchorLaw::kBlend;
   RowMatX normals;             ///< #V x 3 unit node normals N_i at rest
+  RowMatX normal_cones;        ///< #V x 6 packed normal cones P_i (surface/normal_cone.hpp): N_i N_i^T off creases
   VecX k_normal;               ///< K_E,i per node, N/m (>= 0)
   VecX k_shear;                ///< K_G,i per node, N/m (>= 0)
   bool volume_penalty = true;  ///< Eq. 3 present

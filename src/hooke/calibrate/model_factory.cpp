@@ -29,6 +29,7 @@ CalibratedModel surface_model(const mesh::Mesh& mesh, const material::Material& 
   t.centre = s.discretisation.centre;
   t.anchor_law = s.law;
   t.normals = s.discretisation.normals;
+  t.normal_cones = s.discretisation.normal_cones;
   t.k_normal = s.k_normal;
   t.k_shear = s.k_shear;
   t.volume_penalty = s.volume != nullptr;
@@ -140,8 +141,8 @@ BuiltModel build_model(const CalibratedModel& m) {
   add_spring_terms(*out.model, m.springs);
   if (m.surface) {
     const SurfaceTerms& t = *m.surface;
-    out.model->add(std::make_unique<surface::AnchorBlock>(out.model->rest_positions(), t.normals, t.k_normal, t.k_shear,
-                                                          t.anchor_law));
+    out.model->add(std::make_unique<surface::AnchorBlock>(out.model->rest_positions(), t.normal_cones, t.k_normal,
+                                                          t.k_shear, t.anchor_law));
     if (t.volume_penalty) {
       auto volume = std::make_unique<surface::VolumePenaltyBlock>(m.mesh.elements, t.rest_volume, t.k_bulk,
                                                                   t.normal_length, t.bulk_modulus, t.volume_force);

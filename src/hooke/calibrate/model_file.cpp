@@ -8,6 +8,7 @@
 #include <hooke/core/version.hpp>
 #include <hooke/io/vtu.hpp>
 #include <hooke/mesh/validate.hpp>
+#include <hooke/surface/normal_cone.hpp>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -53,9 +54,15 @@ void write_surface(std::ostream& out, const SurfaceTerms& s) {
       << num(s.centre(1)) << ", " << num(s.centre(2))
       << "],\n    \"anchor_law\": " << str(std::string(surface::anchor_law_name(s.anchor_law)))
       << ",\n    \"anchors\": [";
-  for (Eigen::Index i = 0; i < s.k_normal.size(); ++i)
+  for (Eigen::Index i = 0; i < s.k_normal.size(); ++i) {
     out << (i ? ",\n      [" : "\n      [") << num(s.k_normal(i)) << ", " << num(s.k_shear(i)) << ", "
-        << num(s.normals(i, 0)) << ", " << num(s.normals(i, 1)) << ", " << num(s.normals(i, 2)) << "]";
+        << num(s.normals(i, 0)) << ", " << num(s.normals(i, 1)) << ", " << num(s.normals(i, 2));
+    // A crease node's normal cone follows its normal; a smooth node's is N N^T and is not written.
+    const surface::ConeRow smooth = surface::smooth_cone(s.normals.row(i).transpose());
+    if ((s.normal_cones.row(i) - smooth).cwiseAbs().maxCoeff() > 1e-12)
+      for (int k = 0; k < 6; ++k) out << ", " << num(s.normal_cones(i, k));
+    out << "]";
+  }
   out << "\n    ],\n    \"volume_penalty\": ";
   if (!s.volume_penalty) {
     out << "null\n  },\n";
@@ -228,13 +235,21 @@ SurfaceTerms read_surface(const Reader& r, const json& j, int nodes) {
   s.k_normal.resize(nodes);
   s.k_shear.resize(nodes);
   s.normals.resize(nodes, 3);
+  s.normal_cones.resize(nodes, 6);
   for (size_t i = 0; i < a.size(); ++i) {
     const std::string where = Reader::at("surface.anchors", i);
-    const json& row = r.array(a[i], where, 5);
-    s.k_normal(static_cast<Eigen::Index>(i)) = r.number(row[0], where);
-    s.k_shear(static_cast<Eigen::Index>(i)) = r.number(row[1], where);
-    for (int k = 0; k < 3; ++k)
-      s.normals(static_cast<Eigen::Index>(i), k) = r.number(row[static_cast<size_t>(2 + k)], where);
+    const json& row = r.array(a[i], where);
+    if (row.size() != 5 && row.size() != 11)
+      r.fail(where,
+             "must have 5 entries (K_E, K_G, normal) or 11 (and a normal cone), not " + std::to_string(row.size()));
+    const auto node = static_cast<Eigen::Index>(i);
+    s.k_normal(node) = r.number(row[0], where);
+    s.k_shear(node) = r.number(row[1], where);
+    for (int k = 0; k < 3; ++k) s.normals(node, k) = r.number(row[static_cast<size_t>(2 + k)], where);
+    if (row.size() == 11)
+      for (int k = 0; k < 6; ++k) s.normal_cones(node, k) = r.number(row[static_cast<size_t>(5 + k)], where);
+    else
+      s.normal_cones.row(node) = surface::smooth_cone(s.normals.row(node).transpose());
   }
   const json& v = r.key(j, "surface", "volume_penalty");
   s.volume_penalty = !v.is_null();

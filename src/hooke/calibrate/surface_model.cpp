@@ -119,7 +119,7 @@ SurfaceModel make_surface_model(mesh::Mesh mesh, const material::Material& mater
   }
   out.law = law;
   out.bulk_modulus = bulk;
-  auto anchors = std::make_unique<surface::AnchorBlock>(rest, d.normals, out.k_normal, out.k_shear, law);
+  auto anchors = std::make_unique<surface::AnchorBlock>(rest, d.normal_cones, out.k_normal, out.k_shear, law);
   out.anchors = anchors.get();
   out.model->add(std::move(anchors));
   if (penalty) {

@@ -2,6 +2,7 @@
 #include <hooke/core/error.hpp>
 #include <hooke/core/name_table.hpp>
 #include <hooke/surface/anchor_block.hpp>
+#include <hooke/surface/normal_cone.hpp>
 
 namespace hooke::surface {
 
@@ -13,16 +14,14 @@ constexpr NameTable<AnchorLaw, 3> kNames{
 std::string_view anchor_law_name(AnchorLaw law) { return kNames.name(law); }
 AnchorLaw anchor_law_from_name(std::string_view name) { return kNames.from_name(name); }
 
-AnchorBlock::AnchorBlock(VecX anchors, RowMatX normals, VecX k_normal, VecX k_shear, AnchorLaw law)
-    : m_anchors(std::move(anchors)),
-      m_normals(std::move(normals)),
-      m_k_normal(std::move(k_normal)),
-      m_k_shear(std::move(k_shear)),
-      m_law(law) {
+AnchorBlock::AnchorBlock(VecX anchors, const RowMatX& cones, VecX k_normal, VecX k_shear, AnchorLaw law)
+    : m_anchors(std::move(anchors)), m_k_normal(std::move(k_normal)), m_k_shear(std::move(k_shear)), m_law(law) {
   const Eigen::Index n = m_anchors.size() / 3;
-  if (m_anchors.size() != 3 * n || m_normals.rows() != n || m_normals.cols() != 3 || m_k_normal.size() != n ||
+  if (m_anchors.size() != 3 * n || cones.rows() != n || cones.cols() != 6 || m_k_normal.size() != n ||
       m_k_shear.size() != n)
-    throw InvalidArgument("AnchorBlock: one anchor, normal, K_E and K_G per node");
+    throw InvalidArgument("AnchorBlock: one anchor, normal cone, K_E and K_G per node");
+  m_cones.reserve(static_cast<size_t>(n));
+  for (Eigen::Index i = 0; i < n; ++i) m_cones.push_back(unpack_cone(cones.row(i)));
   for (Eigen::Index i = 0; i < n; ++i)
     if (!(m_k_normal(i) >= 0.0) || !(m_k_shear(i) >= 0.0) || !std::isfinite(m_k_normal(i) + m_k_shear(i)))
       throw InvalidArgument("anchor " + std::to_string(i) + " has a negative or non-finite stiffness");
@@ -30,24 +29,22 @@ AnchorBlock::AnchorBlock(VecX anchors, RowMatX normals, VecX k_normal, VecX k_sh
 
 namespace {
 
-// |c| smoothed at c = 0 so that Newton's method does not stall on the kink of the paper's blend where a node
-// moves along its tangent plane: (sqrt(c^2 + d^2) - d) / (sqrt(1 + d^2) - d) is 0 at c = 0, 1 at |c| = 1 and
-// within 0.01 of |c| everywhere.
+// |c| = sqrt(q), q = d^T P d^, smoothed at c = 0 so that Newton's method does not stall on the kink of the paper's
+// blend where a node moves along its tangent plane: (sqrt(q + s^2) - s) / (sqrt(1 + s^2) - s) is 0 at q = 0, 1 at
+// q = 1 and within 0.01 of |c| everywhere.
 constexpr double kSmoothing = 0.01;
-double blend_weight(double c) {
-  return (std::sqrt(c * c + kSmoothing * kSmoothing) - kSmoothing) /
-         (std::sqrt(1.0 + kSmoothing * kSmoothing) - kSmoothing);
-}
-double blend_weight_slope(double c) {
-  return c / std::sqrt(c * c + kSmoothing * kSmoothing) / (std::sqrt(1.0 + kSmoothing * kSmoothing) - kSmoothing);
-}
+const double kScale = std::sqrt(1.0 + kSmoothing * kSmoothing) - kSmoothing;
+double blend_weight(double q) { return (std::sqrt(q + kSmoothing * kSmoothing) - kSmoothing) / kScale; }
+// d(blend_weight)/dq times 2: the weight's gradient in d^ is (P d^) times this.
+double blend_weight_slope(double q) { return 1.0 / (std::sqrt(q + kSmoothing * kSmoothing) * kScale); }
 
 }  // namespace
 
 double AnchorBlock::stiffness_along(int node, const Vec3& direction) const {
   if (m_law == AnchorLaw::kSingle) return m_k_normal(node);
-  const double c = m_normals.row(node).dot(direction.normalized());
-  const double w = m_law == AnchorLaw::kBlend ? blend_weight(c) : c * c;
+  const Vec3 u = direction.normalized();
+  const double q = u.dot(m_cones[static_cast<size_t>(node)] * u);
+  const double w = m_law == AnchorLaw::kBlend ? blend_weight(q) : q;
   return w * m_k_normal(node) + (1.0 - w) * m_k_shear(node);
 }
 
@@ -65,8 +62,8 @@ void AnchorBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX>
   for (Eigen::Index i = 0; i < m_anchors.size() / 3; ++i) {
     const Vec3 d = x.segment<3>(3 * i) - m_anchors.segment<3>(3 * i);
     if (m_law == AnchorLaw::kTensor) {
-      const Vec3 n = m_normals.row(i).transpose();
-      gradient.segment<3>(3 * i) += m_k_shear(i) * d + (m_k_normal(i) - m_k_shear(i)) * n.dot(d) * n;
+      gradient.segment<3>(3 * i) +=
+          m_k_shear(i) * d + (m_k_normal(i) - m_k_shear(i)) * (m_cones[static_cast<size_t>(i)] * d);
     } else if (d.squaredNorm() > 0.0) {
       gradient.segment<3>(3 * i) += stiffness_along(static_cast<int>(i), d) * d;  // Eq. 2 with rest length 0
     }
@@ -81,27 +78,24 @@ RowMatXi AnchorBlock::element_nodes() const {
 
 void AnchorBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter,
                                      double* values, bool project_psd) const {
-  using Mat3 = Eigen::Matrix<double, 3, 3>;
   for (Eigen::Index i = 0; i < m_anchors.size() / 3; ++i) {
-    const Vec3 n = m_normals.row(i).transpose();
+    const Mat3& p = m_cones[static_cast<size_t>(i)];
     const Vec3 d = x.segment<3>(3 * i) - m_anchors.segment<3>(3 * i);
     Mat3 h = Mat3::Zero();
     switch (m_law) {
       case AnchorLaw::kSingle: h = m_k_normal(i) * Mat3::Identity(); break;
-      case AnchorLaw::kTensor:
-        h = m_k_shear(i) * Mat3::Identity() + (m_k_normal(i) - m_k_shear(i)) * n * n.transpose();
-        break;
+      case AnchorLaw::kTensor: h = m_k_shear(i) * Mat3::Identity() + (m_k_normal(i) - m_k_shear(i)) * p; break;
       case AnchorLaw::kBlend: {
         const double l = d.norm();
         if (l == 0.0) {
           h = m_k_normal(i) * Mat3::Identity();
           break;
         }
-        const Vec3 u = d / l;
-        const double c = n.dot(u);
+        const Vec3 u = d / l, pu = p * u;
+        const double q = u.dot(pu);
         h = stiffness_along(static_cast<int>(i), d) * Mat3::Identity();
         if (!project_psd) {
-          const Mat3 j = (m_k_normal(i) - m_k_shear(i)) * blend_weight_slope(c) * u * (n - c * u).transpose();
+          const Mat3 j = (m_k_normal(i) - m_k_shear(i)) * blend_weight_slope(q) * u * (pu - q * u).transpose();
           h += 0.5 * (j + j.transpose());
         }
         break;

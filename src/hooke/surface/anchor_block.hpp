@@ -2,6 +2,7 @@
 /// Zero-length inner ("anchor", shape-preserving) springs of Arnab & Raja, Eq. 2: each node is pulled back to
 /// its anchor, its rest position, fixed in the world.
 #include <hooke/model/term_block.hpp>
+#include <vector>
 
 namespace hooke::surface {
 
@@ -12,12 +13,14 @@ enum class AnchorLaw {
   /// The paper's run-time blend: K_i = |N_i . F^_i| K_E + (1 - |N_i . F^_i|) K_G, force -K_i d. F^_i, "the
   /// acting force unit vector at node i", is read as the anchor's own force direction -d^ (at rest under a
   /// load the anchor balances the other forces on the node, so both readings agree). The force is radial in d
-  /// with a direction-dependent magnitude: it has no potential (not conservative). |N . F^| is smoothed at 0,
-  /// (sqrt(c^2 + 0.01^2) - 0.01) / (sqrt(1 + 0.01^2) - 0.01), so that Newton's method converges where a node
-  /// moves in its tangent plane; still exactly K_E for a normal and K_G for a tangential stretch.
+  /// with a direction-dependent magnitude: it has no potential (not conservative). |N . F^| is read as
+  /// c = sqrt(d^T P_i d^) with P_i the node's normal cone (normal_cone.hpp: N_i N_i^T, so c = |N_i . d^|, except at
+  /// a crease) and smoothed at 0, (sqrt(c^2 + 0.01^2) - 0.01) / (sqrt(1 + 0.01^2) - 0.01), so that Newton's method
+  /// converges where a node moves in its tangent plane; still exactly K_E for a normal and K_G for a tangential
+  /// stretch.
   kBlend,
-  /// Conservative alternative with the same two extremes: E = 1/2 d^T (K_E N N^T + K_G (I - N N^T)) d, the
-  /// stiffness along d then blends by (N . d^)^2 instead of |N . d^|.
+  /// Conservative alternative with the same two extremes: E = 1/2 d^T (K_E P + K_G (I - P)) d (P = N N^T off
+  /// creases), the stiffness along d then blends by (N . d^)^2 instead of |N . d^|.
   kTensor,
 };
 
@@ -30,11 +33,12 @@ AnchorLaw anchor_law_from_name(std::string_view name);
 class AnchorBlock final : public model::TermBlock {
  public:
   /// @param anchors   flat anchor positions, m (3 per node)
-  /// @param normals   #V x 3 unit node normals N_i at rest
+  /// @param cones     #V x 6 packed normal cones P_i at rest (normal_cone.hpp), symmetric with eigenvalues in
+  ///                  [0, 1]; N_i N_i^T for a smooth node
   /// @param k_normal  K_E,i, N/m, >= 0
   /// @param k_shear   K_G,i, N/m, >= 0 (unused by kSingle)
   /// @throws InvalidArgument on mismatched sizes or negative stiffnesses
-  AnchorBlock(VecX anchors, RowMatX normals, VecX k_normal, VecX k_shear, AnchorLaw law);
+  AnchorBlock(VecX anchors, const RowMatX& cones, VecX k_normal, VecX k_shear, AnchorLaw law);
 
   std::string_view name() const override { return "anchors"; }
   bool conservative() const override { return m_law != AnchorLaw::kBlend; }
@@ -42,9 +46,9 @@ class AnchorBlock final : public model::TermBlock {
   double energy(const Eigen::Ref<const VecX>& x) const override;
   void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const override;
   RowMatXi element_nodes() const override;
-  /// kBlend: the symmetric part of the force Jacobian, K_i I + (K_E - K_G) w'(c) sym(d^ (N - c d^)^T) with
-  /// c = N . d^ and w the smoothed |c| (K_E I at d = 0, the stiffest direction, so that explicit step limits stay
-  /// safe); with project_psd just K_i I.
+  /// kBlend: the symmetric part of the force Jacobian, K_i I + (K_E - K_G) sym(d^ (P d^ - q d^)^T) / s with
+  /// q = d^T P d^ and s = sqrt(q + 0.01^2) (sqrt(1 + 0.01^2) - 0.01), the derivative of the smoothed weight (K_E I at
+  /// d = 0, the stiffest direction, so that explicit step limits stay safe); with project_psd just K_i I.
   void add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter, double* values,
                           bool project_psd) const override;
 
@@ -54,7 +58,7 @@ class AnchorBlock final : public model::TermBlock {
 
  private:
   VecX m_anchors;
-  RowMatX m_normals;
+  std::vector<Mat3> m_cones;
   VecX m_k_normal, m_k_shear;
   AnchorLaw m_law;
 };

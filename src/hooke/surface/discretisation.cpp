@@ -4,6 +4,7 @@
 #include <hooke/mesh/closed_surface.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <hooke/surface/discretisation.hpp>
+#include <hooke/surface/normal_cone.hpp>
 #include <limits>
 #include <vector>
 
@@ -27,6 +28,7 @@ Discretisation discretise(const mesh::Mesh& m, const Vec3& centre) {
   const VecX x = Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size());
   d.volume = mesh::enclosed_volume(m.elements, x);
   d.normals = node_normals(m.elements, x);
+  d.normal_cones = node_normal_cones(m.elements, x, d.normals);
   const int n = m.node_count();
   d.radial_length.resize(n);
   d.normal_length.resize(n);
@@ -80,6 +82,7 @@ Discretisation discretise_by_depth(const mesh::Mesh& m) {
   const VecX x = Eigen::Map<const VecX>(m.nodes.data(), m.nodes.size());
   d.volume = mesh::enclosed_volume(m.elements, x);
   d.normals = node_normals(m.elements, x);
+  d.normal_cones = node_normal_cones(m.elements, x, d.normals);
   const int n = m.node_count(), nt = m.element_count();
   d.normal_length.resize(n);
   RowMatX axis(n, 3);  // the direction from p_i to its inner point c_i

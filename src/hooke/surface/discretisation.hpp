@@ -14,6 +14,7 @@ struct Discretisation {
   Vec3 centre = Vec3::Zero();  ///< object centre c, m (the volume centroid unless given)
   double volume = 0.0;         ///< enclosed volume V_0, m^3
   RowMatX normals;             ///< #V x 3 unit node normals N_i (node_normals)
+  RowMatX normal_cones;        ///< #V x 6 packed normal cones P_i (node_normal_cones): N_i N_i^T off creases
   VecX radial_length;          ///< L_i = |p_i - c|, m: the radial link of Fig. 5
   /// L'_i = (p_i - c) . N_i, m: the length of the node's own axis. Fig. 6 moves the centre to c_i, the point of
   /// the normal line through p_i nearest to c (c_i = p_i - L'_i N_i), so that a node's inner volume is measured
