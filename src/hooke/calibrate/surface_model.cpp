@@ -2,6 +2,7 @@
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
+#include <hooke/mesh/measure.hpp>
 #include <hooke/mesh/topology.hpp>
 #include <hooke/springs/spring_block.hpp>
 #include <map>
@@ -56,7 +57,17 @@ SpringModel membrane(const mesh::Mesh& m, double youngs_modulus, double thicknes
   return out;
 }
 
+double surface_area(const mesh::Mesh& m) {
+  double area = 0.0;
+  for (int t = 0; t < m.element_count(); ++t) area += mesh::element_measure(m, t);
+  return area;
+}
+
 }  // namespace
+
+double default_membrane_thickness(double area, const surface::Discretisation& d) {
+  return kMembraneRatio * area / static_cast<double>(d.normal_length.size()) / d.normal_length.mean();
+}
 
 SurfaceModel make_surface_model(mesh::Mesh mesh, const material::Material& material, const SurfaceOptions& o) {
   material::validate(material);
@@ -109,7 +120,7 @@ SurfaceModel make_surface_model(mesh::Mesh mesh, const material::Material& mater
   const bool penalty = o.volume_penalty ? *o.volume_penalty : o.scheme == SurfaceScheme::kD;
 
   out.membrane_thickness =
-      o.membrane_thickness >= 0.0 ? o.membrane_thickness : kDefaultThicknessRatio * d.normal_length.mean();
+      o.membrane_thickness >= 0.0 ? o.membrane_thickness : default_membrane_thickness(surface_area(mesh), d);
   VecX rest = Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size());
   out.model = std::make_shared<model::Model>(3, rest);
   if (out.membrane_thickness > 0.0) {

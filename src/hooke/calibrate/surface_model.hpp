@@ -40,7 +40,7 @@ struct SurfaceOptions {
   double density = 1000.0;     ///< kg/m^3: the object mass M = density x enclosed volume (unless mass > 0)
   double mass = 0.0;           ///< M, kg; when > 0 it replaces density x volume
   /// Membrane thickness t of the surface springs (Lloyd Eq. 9, k_ij = sum_t E t A_t / l_ij^2), m. Negative
-  /// (default): kDefaultThicknessRatio times the mean node axis length L'.
+  /// (default): default_membrane_thickness.
   double membrane_thickness = -1.0;
   std::optional<surface::AnchorLaw> anchor_law;  ///< default: kBlend for D, kSingle for A-C
   std::optional<bool> volume_penalty;            ///< default: on for D only
@@ -48,8 +48,14 @@ struct SurfaceOptions {
   ShearFactor shear_factor = ShearFactor::kShearModulus;
 };
 
-/// Default membrane thickness relative to the mean node axis length L' (see docs/surface.md for the choice).
-inline constexpr double kDefaultThicknessRatio = 0.005;
+/// The membrane springs' stiffness relative to the anchors' by default: t = kMembraneRatio x (mean node area A) /
+/// (mean axis length L'), so that a membrane spring, about E t, is about kMembraneRatio x an anchor's K_E = E A / L'
+/// at every resolution. See docs/surface.md ("Membrane thickness") for the choice.
+inline constexpr double kMembraneRatio = 0.05;
+
+/// The default membrane thickness t = kMembraneRatio x (surface area / #V) / mean L', m, of a surface whose
+/// discretisation is `d`. @pre area > 0, d.normal_length > 0
+double default_membrane_thickness(double area, const surface::Discretisation& d);
 
 /// A built surface model with what the experiments and reports need.
 struct SurfaceModel {

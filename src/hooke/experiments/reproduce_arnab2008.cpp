@@ -153,7 +153,7 @@ std::vector<FrameRateRow> arnab2008_table2(double nu, int steps) {
 Arnab2008Report reproduce_arnab2008() {
   const auto t0 = Clock::now();
   Arnab2008Report r;
-  r.membrane_thickness_ratio = calibrate::kDefaultThicknessRatio;
+  r.membrane_ratio = calibrate::kMembraneRatio;
   r.table1 = arnab2008_table1(r.poisson_ratio, r.cube_size, r.strain_load);
   r.table2 = arnab2008_table2(r.poisson_ratio);
   r.fig10 = arnab2008_fig10(r.poisson_ratio);

@@ -79,10 +79,10 @@ struct WeightsRow {
 };
 
 struct Arnab2008Report {
-  double poisson_ratio = 0.3;             ///< nu used throughout (the paper gives none)
-  double cube_size = 0.1;                 ///< cube edge, m
-  double strain_load = 0.01;              ///< top-face pressure / E
-  double membrane_thickness_ratio = 0.0;  ///< t / mean L' (calibrate::kDefaultThicknessRatio)
+  double poisson_ratio = 0.3;   ///< nu used throughout (the paper gives none)
+  double cube_size = 0.1;       ///< cube edge, m
+  double strain_load = 0.01;    ///< top-face pressure / E
+  double membrane_ratio = 0.0;  ///< membrane springs / anchors (calibrate::kMembraneRatio): t = ratio x A / L'
   std::vector<YoungsModulusRow> table1;
   std::vector<FrameRateRow> table2;
   std::vector<VolumeDeviationRow> fig10;
