@@ -3,6 +3,7 @@
 // reading of the blend, docs/surface.md "Creases") and the membrane's share shrinks as the mesh is refined.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <hooke/experiments/reproduce_arnab2008.hpp>
 
 namespace hooke::experiments {

@@ -11,12 +11,6 @@ namespace {
 
 const std::string kData = HOOKE_TEST_DATA;
 
-double total_measure(const mesh::Mesh& m) {
-  double v = 0;
-  for (int e = 0; e < m.element_count(); ++e) v += mesh::element_measure(m, e);
-  return v;
-}
-
 TEST(ForeignFiles, AllGmshFlavoursOfTheBoxAgree) {
   const mesh::Mesh ref = read_mesh(kData + "/gmsh_box_v41_ascii.msh");
   EXPECT_EQ(ref.kind, mesh::ElementKind::kTet);

@@ -57,12 +57,6 @@ SpringModel membrane(const mesh::Mesh& m, double youngs_modulus, double thicknes
   return out;
 }
 
-double surface_area(const mesh::Mesh& m) {
-  double area = 0.0;
-  for (int t = 0; t < m.element_count(); ++t) area += mesh::element_measure(m, t);
-  return area;
-}
-
 }  // namespace
 
 double default_membrane_thickness(double area, const surface::Discretisation& d) {
@@ -120,7 +114,7 @@ SurfaceModel make_surface_model(mesh::Mesh mesh, const material::Material& mater
   const bool penalty = o.volume_penalty ? *o.volume_penalty : o.scheme == SurfaceScheme::kD;
 
   out.membrane_thickness =
-      o.membrane_thickness >= 0.0 ? o.membrane_thickness : default_membrane_thickness(surface_area(mesh), d);
+      o.membrane_thickness >= 0.0 ? o.membrane_thickness : default_membrane_thickness(mesh::total_measure(mesh), d);
   VecX rest = Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size());
   out.model = std::make_shared<model::Model>(3, rest);
   if (out.membrane_thickness > 0.0) {

@@ -123,14 +123,14 @@ struct SparseCholesky::Impl {
   bool analyzed = false, ok = false;
   mutable SimplicialFactor simplicial;
   mutable bool extracted = false;
-  mutable VecX supernodal_work, supernodal_rows;  // n x 3 and (largest supernode's rows) x 3
+  mutable VecX supernodal_work, supernodal_rows;  // n x 3 and the largest supernode's rows
 
   void cholmod_solve_in_place(double* b, int nrhs) const {
     const cholmod_factor& l = *cholmod.factor();
     if (!l.is_super) throw SolverFailure("SparseCholesky: CHOLMOD returned a simplicial factor");
     if (supernodal_work.size() != 3 * static_cast<Eigen::Index>(l.n)) {
       supernodal_work.resize(3 * static_cast<Eigen::Index>(l.n));
-      supernodal_rows.resize(3 * static_cast<Eigen::Index>(l.maxesize) + 3);
+      supernodal_rows.resize(static_cast<Eigen::Index>(l.maxesize) + 1);
     }
     double* w = supernodal_work.data();
     double* t = supernodal_rows.data();

@@ -35,6 +35,12 @@ double element_measure(const Mesh& mesh, int e) {
   return 0.0;
 }
 
+double total_measure(const Mesh& mesh) {
+  double sum = 0.0;
+  for (int e = 0; e < mesh.element_count(); ++e) sum += element_measure(mesh, e);
+  return sum;
+}
+
 double bounding_box_diagonal(const Mesh& mesh) {
   if (mesh.nodes.rows() == 0) return 0.0;
   return (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();

@@ -229,7 +229,7 @@ Mesh tetrahedralize(Mesh surface, const TetrahedralizeOptions& options, Tetrahed
   validate(tets);
   r.nodes = tets.node_count();
   r.tets = tets.element_count();
-  for (int e = 0; e < tets.element_count(); ++e) r.volume += element_measure(tets, e);
+  r.volume = total_measure(tets);
   r.volume_error = r.volume / r.surface_volume - 1.0;
   r.surface_preserved =
       tets.node_count() >= surface.node_count() && tets.nodes.topRows(surface.node_count()) == surface.nodes;
