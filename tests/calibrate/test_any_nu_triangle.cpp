@@ -17,6 +17,7 @@
 #include <hooke/mesh/measure.hpp>
 #include <hooke/springs/triangle_area_block.hpp>
 #include <iostream>
+#include <support/block_checks.hpp>
 
 namespace hooke::calibrate {
 namespace {
@@ -53,6 +54,7 @@ TEST(TriangleAreaBlock, GradientAndHessianMatchFiniteDifferences) {
     EXPECT_LT((h.col(i) - column).norm(), 1e-6 * h.norm()) << i;
   }
   EXPECT_LT((h - h.transpose()).norm(), 1e-12 * h.norm());
+  test::expect_fused_energy_and_gradient(*model.blocks()[0], x);
 }
 
 // K_CST is linear in (lambda*, mu): K_lambda = K_CST(E, nu) - K_CST(2 mu, 0) in plane strain (lambda* = lambda).

@@ -23,9 +23,8 @@ TEST(SparseCholesky, CholmodAndEigenAgree) {
   EXPECT_EQ(e.backend_name(), "eigen-ldlt");
 }
 
-// solve_in_place: 1-3 interleaved right-hand sides, on a 3D mesh Laplacian whose CHOLMOD factor has real
-// supernodes (the hand-written supernodal kernels run through blocks of 4 columns and their remainders).
-TEST(SparseCholesky, SolveInPlaceMatchesTheResidualForSeveralRightHandSides) {
+// A weighted graph Laplacian of a 7 x 7 x 7 tet box plus a shift: SPD, with a 3D mesh's factor fill.
+SparseMatrix mesh_laplacian() {
   const mesh::Mesh m = mesh::tet_box(0.01, 0.01, 0.01, 7, 7, 7);
   std::vector<Triplet> t;
   for (const auto& [i, j] : mesh::unique_edges(m)) {
@@ -35,6 +34,13 @@ TEST(SparseCholesky, SolveInPlaceMatchesTheResidualForSeveralRightHandSides) {
   for (int i = 0; i < m.node_count(); ++i) t.emplace_back(i, i, 0.05);
   SparseMatrix a(m.node_count(), m.node_count());
   a.setFromTriplets(t.begin(), t.end());
+  return a;
+}
+
+// solve_in_place: 1-3 interleaved right-hand sides, on a 3D mesh Laplacian whose CHOLMOD factor has real
+// supernodes (the hand-written supernodal kernels run through blocks of 4 columns and their remainders).
+TEST(SparseCholesky, SolveInPlaceMatchesTheResidualForSeveralRightHandSides) {
+  const SparseMatrix a = mesh_laplacian();
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (CholeskyBackend backend : {CholeskyBackend::kCholmod, CholeskyBackend::kEigen}) {
@@ -54,6 +60,35 @@ TEST(SparseCholesky, SolveInPlaceMatchesTheResidualForSeveralRightHandSides) {
       }
     }
   }
+}
+
+// The single-precision solve (quasi-Newton's initial Hessian): a float copy of the supernodal factor, refreshed at
+// every factorisation; about 1e-7 relative error, not double's 1e-15; solve() stays in double.
+TEST(SparseCholesky, SinglePrecisionSolveIsAFloatCopyOfTheFactor) {
+  const SparseMatrix a = mesh_laplacian();
+  SparseCholesky exact(CholeskyBackend::kCholmod), single(CholeskyBackend::kCholmod);
+  single.set_single_precision_solve(true);
+  const VecX b = VecX::LinSpaced(a.rows(), -1.0, 2.0);
+  for (double scale : {1.0, 3.0}) {  // a second factorisation refreshes the copy
+    const SparseMatrix as = a * scale;
+    ASSERT_TRUE(exact.factorize(as));
+    ASSERT_TRUE(single.factorize(as));
+    VecX xd = b, xs = b, x3(3 * a.rows());
+    exact.solve_in_place(xd.data(), 1);
+    single.solve_in_place(xs.data(), 1);
+    const double error = (xs - xd).norm() / xd.norm();
+    EXPECT_GT(error, 1e-12) << "the float path did not run";
+    EXPECT_LT(error, 1e-5);
+    EXPECT_LT((single.solve(b) - xd).norm(), 1e-12 * xd.norm());  // solve() is double
+    for (Eigen::Index i = 0; i < a.rows(); ++i) x3.segment<3>(3 * i).setConstant(b(i));
+    single.solve_in_place(x3.data(), 3);
+    for (int r = 0; r < 3; ++r)
+      EXPECT_EQ(VecX(Eigen::Map<const VecX, 0, Eigen::InnerStride<3>>(x3.data() + r, a.rows())), xs);
+  }
+  single.set_single_precision_solve(false);  // back to double on the current factor
+  VecX xd = b;
+  single.solve_in_place(xd.data(), 1);
+  EXPECT_LT((SparseMatrix(a * 3.0) * xd - b).norm(), 1e-11 * b.norm());
 }
 
 // kAuto: Eigen's LDL^T for small systems, CHOLMOD from 1 000 unknowns on.

@@ -49,6 +49,7 @@ TEST(VolumePenalty, EnergyReadingIsTheGradientOfTheBulkEnergy) {
   MatX dropped = (5000.0 / s.d.volume) * dv * dv.transpose();
   for (Eigen::Index i = 0; i < x.size() / 3; ++i) dropped.block(3 * i, 3 * i, 3, 3).setZero();
   EXPECT_LT((test::block_hessian(b, 3, x) + dropped - h_fd).norm(), 1e-6 * h_fd.norm());
+  test::expect_fused_energy_and_gradient(b, x);
 }
 
 TEST(VolumePenalty, NodalReadingIsTheBulkPressureOnEachNodesArea) {

@@ -30,12 +30,19 @@ class ElementSchedule {
   /// tet-volume energy pass).
   template <class Fn>
   double sum(Fn&& fn) const {
-    std::array<double, kMaxChunks> partial{};
-    for_each_chunk([&](std::span<const int> elements, int chunk) {
+    return sum_chunks([&](std::span<const int> elements) {
       double s = 0.0;
       for (int e : elements) s += fn(e);
-      partial[static_cast<size_t>(chunk)] = s;
+      return s;
     });
+  }
+  /// Sum over chunks of fn(chunk_elements) (a chunk's sum, which may also scatter into per-node arrays as
+  /// for_each_chunk allows), added in chunk order: the same rounding as sum() when fn sums its elements in order.
+  template <class Fn>
+  double sum_chunks(Fn&& fn) const {
+    std::array<double, kMaxChunks> partial{};
+    for_each_chunk(
+        [&](std::span<const int> elements, int chunk) { partial[static_cast<size_t>(chunk)] = fn(elements); });
     double total = 0.0;
     for (int c = 0; c < chunk_count(); ++c) total += partial[static_cast<size_t>(c)];
     return total;

@@ -45,6 +45,20 @@ void Model::gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient,
       b->add_gradient(x, gradient);
 }
 
+double Model::energy_and_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient,
+                                  const Interaction* interaction) const {
+  gradient.setZero();
+  double e = 0.0;
+  for (const auto& b : m_blocks)
+    if (interaction && b->follows_interaction()) {
+      e += b->energy(x);
+      b->add_interaction_gradient(x, *interaction, gradient);
+    } else {
+      e += b->energy_and_add_gradient(x, gradient);
+    }
+  return e;
+}
+
 SparseMatrix Model::hessian(const Eigen::Ref<const VecX>& x, bool project_psd, const Interaction* interaction) const {
   HessianAssembly assembly(*this);
   assembly.assemble(x, project_psd, interaction);

@@ -34,6 +34,9 @@ class Model {
   /// dE/dx at x, N (the blocks' forces: for non-conservative blocks not a gradient). With an interaction,
   /// blocks that follow one (TermBlock::follows_interaction) evaluate under it.
   VecX gradient(const Eigen::Ref<const VecX>& x, const Interaction* interaction = nullptr) const;
+  /// energy(x) (J, returned) and gradient(x, gradient, interaction) (N) in one pass per block; allocates nothing.
+  double energy_and_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient,
+                             const Interaction* interaction = nullptr) const;
   /// Writes dE/dx at x (N) into `gradient` (size dof_count); allocates nothing.
   void gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient,
                 const Interaction* interaction = nullptr) const;

@@ -47,6 +47,13 @@ class TermBlock {
   virtual double energy(const Eigen::Ref<const VecX>& x) const = 0;
   /// Adds dE/dx at x (N) to `gradient` (same size as x).
   virtual void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const = 0;
+  /// energy(x) (J, returned) and add_gradient(x, gradient) (N) together: blocks override it with one pass over
+  /// their elements (the real-time integrators evaluate both at every trial point). Default: the two calls.
+  virtual double energy_and_add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
+    const double e = energy(x);
+    add_gradient(x, gradient);
+    return e;
+  }
   /// #elements x nodes-per-element node indices of the elements whose Hessians the block adds (0 x 0 when its
   /// Hessian is zero). Fixes the sparsity pattern.
   virtual RowMatXi element_nodes() const = 0;

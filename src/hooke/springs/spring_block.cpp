@@ -68,6 +68,25 @@ void add_spring_gradients(const std::vector<std::array<int, 2>>& pairs, const Ve
   }
 }
 
+// add_spring_gradients and the springs' energy, returned.
+template <int D>
+double add_spring_energies_and_gradients(const std::vector<std::array<int, 2>>& pairs, const VecX& stiffness,
+                                         const VecX& rest, std::span<const int> springs, const double* x,
+                                         double* gradient) {
+  using Vec = Eigen::Matrix<double, D, 1>;
+  double energy = 0.0;
+  for (int s : springs) {
+    const auto [i, j] = pairs[static_cast<size_t>(s)];
+    const Vec d = Vec::Map(x + D * i) - Vec::Map(x + D * j);
+    const double l = d.norm(), stretch = l - rest(s);
+    energy += 0.5 * stiffness(s) * stretch * stretch;
+    const Vec g = (stiffness(s) * (1.0 - rest(s) / l)) * d;
+    Vec::Map(gradient + D * i) += g;
+    Vec::Map(gradient + D * j) -= g;
+  }
+  return energy;
+}
+
 template <int D>
 void add_directions(const std::vector<std::array<int, 2>>& pairs, const VecX& stiffness, const VecX& rest,
                     std::span<const int> springs, const double* x, double* out) {
@@ -109,6 +128,15 @@ void SpringBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX>
       add_spring_gradients<3>(m_pairs, m_stiffness, m_rest_length, springs, x.data(), gradient.data());
     else
       add_spring_gradients<2>(m_pairs, m_stiffness, m_rest_length, springs, x.data(), gradient.data());
+  });
+}
+
+double SpringBlock::energy_and_add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
+  return m_schedule.sum_chunks([&](std::span<const int> springs) {
+    return m_dim == 3 ? add_spring_energies_and_gradients<3>(m_pairs, m_stiffness, m_rest_length, springs, x.data(),
+                                                             gradient.data())
+                      : add_spring_energies_and_gradients<2>(m_pairs, m_stiffness, m_rest_length, springs, x.data(),
+                                                             gradient.data());
   });
 }
 

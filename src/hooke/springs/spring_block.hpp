@@ -35,6 +35,7 @@ class SpringBlock final : public model::TermBlock, public model::CentralSprings 
   const model::CentralSprings* central_springs() const override { return this; }
   double energy(const Eigen::Ref<const VecX>& x) const override;
   void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const override;
+  double energy_and_add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const override;
   RowMatXi element_nodes() const override;
   /// With project_psd, the isotropic term k (1 - l0/l) I of a compressed spring (l < l0) is dropped, which
   /// leaves the closest positive semi-definite block of this form.

@@ -77,6 +77,10 @@ struct TetVolumeBlock::Terms : detail::MeasureTerms<TetShape> {
 TetVolumeBlock::TetVolumeBlock(RowMatXi tets, VecX stiffness, VecX rest_volume)
     : m_terms(std::make_shared<const Terms>(std::move(tets), std::move(stiffness), std::move(rest_volume), "tet")) {}
 
+double TetVolumeBlock::energy_and_add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
+  return m_terms->energy_and_add_gradient(x, gradient);
+}
+
 RowMatXi TetVolumeBlock::element_nodes() const { return m_terms->elements(); }
 
 double TetVolumeBlock::energy(const Eigen::Ref<const VecX>& x) const { return m_terms->energy(x); }

@@ -57,6 +57,10 @@ TriangleAreaBlock::TriangleAreaBlock(RowMatXi triangles, VecX stiffness, VecX re
     : m_terms(std::make_shared<const Terms>(std::move(triangles), std::move(stiffness), std::move(rest_area),
                                             "triangle")) {}
 
+double TriangleAreaBlock::energy_and_add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
+  return m_terms->energy_and_add_gradient(x, gradient);
+}
+
 RowMatXi TriangleAreaBlock::element_nodes() const { return m_terms->elements(); }
 
 double TriangleAreaBlock::energy(const Eigen::Ref<const VecX>& x) const { return m_terms->energy(x); }

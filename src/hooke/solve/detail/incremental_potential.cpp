@@ -24,8 +24,20 @@ void IncrementalPotential::begin(double w, double dt) {
   if (m_s.damped() && m_s.dyn.stiffness_damping > 0.0) m_s.rest_stiffness();  // before the assembly is refilled
 }
 
-double IncrementalPotential::value(const VecX& z) {
-  const double e = m_s.model().energy(z);
+double IncrementalPotential::value(const VecX& z) { return potential(z, m_s.model().energy(z)); }
+
+void IncrementalPotential::gradient(const VecX& z, VecX& out) {
+  m_s.model().gradient(z, out, m_s.problem.interaction_or_null());
+  finish_gradient(z, out);
+}
+
+double IncrementalPotential::value_and_gradient(const VecX& z, VecX& out) {
+  const double e = m_s.model().energy_and_gradient(z, out, m_s.problem.interaction_or_null());
+  finish_gradient(z, out);
+  return potential(z, e);
+}
+
+double IncrementalPotential::potential(const VecX& z, double e) {
   if (!std::isfinite(e)) return e;
   double phi = e - m_s.f_total.dot(z - m_s.model().rest_positions());
   if (m_w > 0.0) phi += 0.5 * m_w * (z - m_x_hat).cwiseAbs2().dot(m_s.dyn.mass);
@@ -37,8 +49,7 @@ double IncrementalPotential::value(const VecX& z) {
   return phi;
 }
 
-void IncrementalPotential::gradient(const VecX& z, VecX& out) {
-  m_s.model().gradient(z, out, m_s.problem.interaction_or_null());
+void IncrementalPotential::finish_gradient(const VecX& z, VecX& out) {
   for (Eigen::Index i = 0; i < m_s.nd; ++i) m_fixed_gradient(i) = m_s.fixed(i) ? out(i) : 0.0;
   out -= m_s.f_total;
   if (m_w > 0.0) out += m_w * m_s.dyn.mass.cwiseProduct(z - m_x_hat);

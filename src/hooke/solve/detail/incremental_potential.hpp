@@ -23,6 +23,8 @@ class IncrementalPotential final : public NewtonObjective {
   double size() const override { return m_size; }
   double value(const VecX& z) override;
   void gradient(const VecX& z, VecX& out) override;
+  /// value(z), returned, and gradient(z, out) with one pass over each block's elements.
+  double value_and_gradient(const VecX& z, VecX& out);
   // |f| on the free DOFs + |gradient| at the step's first gradient evaluation, N.
   double force_scale() const override { return m_scale; }
   // H(z) + w M + D / dt, fixed DOFs replaced by the identity.
@@ -32,6 +34,11 @@ class IncrementalPotential final : public NewtonObjective {
   const VecX& fixed_model_gradient() const { return m_fixed_gradient; }
 
  private:
+  // phi(z) from the model's energy e at z; e itself when it is not finite.
+  double potential(const VecX& z, double e);
+  // The model's dE/dx at z in `out` to phi's gradient (loads, inertia, damping, fixed DOFs zeroed).
+  void finish_gradient(const VecX& z, VecX& out);
+
   SimulationState& m_s;
   double m_w = 0.0, m_dt = 0.0, m_size = 1.0, m_scale = -1.0, m_load = 0.0;
   VecX m_x_n, m_x_hat, m_dz, m_damping;  // start, inertial target, scratch

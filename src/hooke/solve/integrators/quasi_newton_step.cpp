@@ -1,7 +1,7 @@
 // The quasi-Newton family (Liu, Bouaziz & Kavan 2017, "Quasi-Newton Methods for Real-Time Simulation of
 // Hyperelastic Materials", ACM TOG 36(3)): backward Euler's incremental potential of any model, minimised by
 // L-BFGS whose initial Hessian is the step's Newton matrix at rest, H0 = M (1/dt^2 + alpha/dt) + (1 + beta/dt) K0,
-// factorised once per dt. Every iteration costs one gradient, one energy (line search) and one prefactored solve:
+// factorised once per dt. Every iteration costs one energy with its gradient (one pass) and one prefactored solve:
 // local/global's cost for springs, tet volume terms, area terms, anchors, volume penalties and FEM alike.
 //
 // Two choices beyond the paper, both measured (docs/simulation.md):
@@ -39,6 +39,10 @@ class QuasiNewtonStep final : public IntegratorStep {
     m_y_hist.setZero(s.nd, q.history);
     m_rho.setZero(q.history);
     m_alpha.setZero(q.history);
+    // H0 is only the L-BFGS initial Hessian: its solve in single precision (a float copy of the factor) halves the
+    // triangular solves' memory traffic, and its ~1e-7 relative error is far below what the curvature pairs
+    // correct (docs/simulation.md, "Single-precision initial Hessian").
+    m_factor.set_single_precision_solve(true);
   }
 
   void refix() override {
@@ -55,13 +59,12 @@ class QuasiNewtonStep final : public IntegratorStep {
     m_refix = false;
     m_objective.begin(1.0 / (dt * dt), dt);
     m_y = m_objective.inertial_target();
-    double phi = m_objective.value(m_y);
+    double phi = m_objective.value_and_gradient(m_y, m_grad);
     if (!std::isfinite(phi)) {  // x_hat inverts an element: start from where the body is
       m_y = s.x;
       s.apply_prescribed(m_y);
-      phi = m_objective.value(m_y);
+      phi = m_objective.value_and_gradient(m_y, m_grad);
     }
-    m_objective.gradient(m_y, m_grad);
     bool gradient_at_y = true;  // the objective's last gradient() was at m_y (the probe force reuses it)
     StepReport r;
     double residual = m_grad.norm();
@@ -87,11 +90,11 @@ class QuasiNewtonStep final : public IntegratorStep {
       bool accepted = false;
       for (int ls = 0; ls < 30 && !accepted; ++ls, alpha *= 0.5) {
         m_trial = m_y + alpha * m_dir;
-        if (conservative) {
-          phi_trial = m_objective.value(m_trial);
+        if (conservative) {  // the gradient with the energy, in one pass: the full step is nearly always taken
+          phi_trial = m_objective.value_and_gradient(m_trial, m_grad_trial);
+          gradient_at_y = false;  // until the trial is accepted
           if (!std::isfinite(phi_trial)) continue;
           accepted = phi_trial <= phi + 1e-4 * alpha * slope || std::abs(phi_trial - phi) <= 1e-13 * std::abs(phi);
-          if (accepted) m_objective.gradient(m_trial, m_grad_trial);
         } else {
           m_objective.gradient(m_trial, m_grad_trial);
           accepted = std::isfinite(m_grad_trial.norm()) && m_grad_trial.norm() < (1.0 - 1e-4 * alpha) * residual;

@@ -51,6 +51,21 @@ class MeasureTerms {
     });
   }
 
+  // energy() and add_gradient() in one pass: the same energy, rounding included.
+  double energy_and_add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
+    return m_schedule.sum_chunks([&](std::span<const int> elements) {
+      double sum = 0.0;
+      for (int e : elements) {
+        const Corners p = corners(x, e);
+        const double m0 = m_rest(e), c = Shape::measure(p) - m0;
+        sum += 0.5 * m_stiffness(e) * c * c / (m0 * m0);
+        const Corners g = m_stiffness(e) * c / (m0 * m0) * Shape::gradient(p);
+        for (int a = 0; a < N; ++a) gradient.template segment<D>(D * m_elements(e, a)) += g.col(a);
+      }
+      return sum;
+    });
+  }
+
   void add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter, double* values,
                           bool project_psd) const {
     m_schedule.for_each_chunk([&](std::span<const int> elements, int) {
