@@ -29,6 +29,7 @@ class MeasureTerms {
         throw InvalidArgument(std::string(what) + " " + std::to_string(e) +
                               " has a non-finite stiffness or a non-positive rest measure");
     m_schedule = ElementSchedule(m_elements);
+    m_scale = m_stiffness.cwiseQuotient(m_rest.cwiseAbs2());
   }
 
   const RowMatXi& elements() const { return m_elements; }
@@ -51,16 +52,20 @@ class MeasureTerms {
     });
   }
 
-  // energy() and add_gradient() in one pass: the same energy, rounding included.
+  // energy() and add_gradient() in one pass, to round-off (k / m0^2 kept per element: no division per element).
   double energy_and_add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
     return m_schedule.sum_chunks([&](std::span<const int> elements) {
       double sum = 0.0;
       for (int e : elements) {
-        const Corners p = corners(x, e);
-        const double m0 = m_rest(e), c = Shape::measure(p) - m0;
-        sum += 0.5 * m_stiffness(e) * c * c / (m0 * m0);
-        const Corners g = m_stiffness(e) * c / (m0 * m0) * Shape::gradient(p);
-        for (int a = 0; a < N; ++a) gradient.template segment<D>(D * m_elements(e, a)) += g.col(a);
+        if constexpr (requires { Shape::add_energy_and_gradient(x.data(), &m_elements(e, 0), 0.0, 0.0, nullptr); }) {
+          sum += Shape::add_energy_and_gradient(x.data(), &m_elements(e, 0), m_rest(e), m_scale(e), gradient.data());
+        } else {
+          const Corners p = corners(x, e);
+          const double c = Shape::measure(p) - m_rest(e), scale = m_scale(e);
+          sum += 0.5 * scale * c * c;
+          const Corners g = (scale * c) * Shape::gradient(p);
+          for (int a = 0; a < N; ++a) gradient.template segment<D>(D * m_elements(e, a)) += g.col(a);
+        }
       }
       return sum;
     });
@@ -84,6 +89,7 @@ class MeasureTerms {
  private:
   RowMatXi m_elements;
   VecX m_stiffness, m_rest;
+  VecX m_scale;  // k / m0^2 per element, for the one-pass loop
   ElementSchedule m_schedule;
 
   Corners corners(const Eigen::Ref<const VecX>& x, int e) const {
