@@ -47,6 +47,18 @@ TEST(LoadCase, TractionForStrainGivesTheRequestedMeanDisplacement) {
   EXPECT_NEAR(mean_top_displacement(lc, p, r.positions), 0.12 * 0.02, 1e-12);
   // A stubby clamped cylinder is stiffer than a free bar: more than E * strain is needed.
   EXPECT_GT(t, 0.12 * 14630.0);
+  // The response that comes with it (the unit solve scaled) is the linear solve at that traction, report included.
+  for (LoadKind kind : {LoadKind::kStretch, LoadKind::kShear}) {
+    const StrainResponse s = linear_response_for_strain(cyl, {mat}, kind, 0.12);
+    const LoadCase lk = make_load_case(cyl, kind, s.traction_pa);
+    model::Problem pk = model::make_problem(model);
+    apply(lk, pk);
+    const auto rk = solve::linear_static(pk);
+    EXPECT_LT((s.fem.positions - rk.positions).norm(), 1e-10 * (rk.positions - model->rest_positions()).norm());
+    EXPECT_NEAR(s.fem.report.reference_force, rk.report.reference_force, 1e-12 * rk.report.reference_force);
+    EXPECT_EQ(s.fem.report.status, solve::SolveStatus::kConverged);
+  }
+  EXPECT_EQ(linear_response_for_strain(cyl, {mat}, LoadKind::kStretch, 0.12).traction_pa, t);
 }
 
 TEST(LoadCase, MeshWithoutFlatTopIsRejected) {

@@ -15,6 +15,9 @@ struct CompareOptions {
   double traction_pa = 0.0;                                 ///< traction, Pa (ignored when strain != 0)
   double strain = 0.0;  ///< != 0: the traction giving this mean linear-FEM strain (then it must be > 0)
   material::Law reference = material::Law::kLinear;  ///< FEM reference law
+  /// the model's static solve starts with this many equal load steps (halved where Newton fails; every accepted
+  /// state checked for stability), default 4; certify uses 1 at its small strains
+  int load_steps = 4;
 };
 
 struct Comparison {

@@ -89,15 +89,29 @@ double mean_top_displacement(const LoadCase& load, const model::Problem& problem
 
 double traction_for_strain(const mesh::Mesh& mesh, const std::vector<material::Material>& materials, LoadKind kind,
                            double strain) {
+  return linear_response_for_strain(mesh, materials, kind, strain).traction_pa;
+}
+
+StrainResponse linear_response_for_strain(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
+                                          LoadKind kind, double strain) {
   if (!(strain > 0.0) || !std::isfinite(strain)) throw InvalidArgument("the strain must be a positive number");
   model::Problem problem = model::make_problem(fem::linear_model(mesh, materials));
   const LoadCase unit = make_load_case(mesh, kind, 1.0, materials.at(0).thickness);
   apply(unit, problem);
-  const solve::StaticResult r = solve::linear_static(problem);
-  solve::require_converged(r.report);
-  const double u = mean_top_displacement(unit, problem, r.positions);
+  StrainResponse out;
+  out.fem = solve::linear_static(problem);
+  solve::require_converged(out.fem.report);
+  const double u = mean_top_displacement(unit, problem, out.fem.positions);
   if (!(u > 0.0)) throw SolverFailure("the unit load produced no displacement along the load direction");
-  return strain * unit.height / u;
+  const double t = strain * unit.height / u;
+  out.traction_pa = t;
+  const VecX& rest = problem.model->rest_positions();
+  out.fem.positions = rest + t * (out.fem.positions - rest);
+  solve::SolveReport& r = out.fem.report;
+  r.residual *= t;
+  r.reference_force *= t;
+  for (double& h : r.residual_history) h *= t;
+  return out;
 }
 
 }  // namespace hooke::experiments

@@ -3,6 +3,7 @@
 #include <hooke/material/material.hpp>
 #include <hooke/mesh/mesh.hpp>
 #include <hooke/model/problem.hpp>
+#include <hooke/solve/static_equilibrium.hpp>
 #include <string_view>
 #include <vector>
 
@@ -54,5 +55,15 @@ double mean_top_displacement(const LoadCase& load, const model::Problem& problem
 /// @pre strain > 0
 double traction_for_strain(const mesh::Mesh& mesh, const std::vector<material::Material>& materials, LoadKind kind,
                            double strain);
+
+/// traction_for_strain's traction with the linear FEM's solution under it: the unit solve scaled by the traction
+/// (the FEM is linear), so a comparison against the linear FEM at a strain costs one factorisation, not two.
+struct StrainResponse {
+  double traction_pa = 0.0;  ///< Pa
+  solve::StaticResult fem;   ///< positions (m) under traction_pa; the report's forces and residuals scaled with it
+};
+/// @pre strain > 0 @throws as traction_for_strain
+StrainResponse linear_response_for_strain(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
+                                          LoadKind kind, double strain);
 
 }  // namespace hooke::experiments
