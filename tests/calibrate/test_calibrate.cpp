@@ -2,6 +2,7 @@
 // the numerical identification (stiffness-fit) on the regular shapes they were derived for.
 #include <gtest/gtest.h>
 
+#include <omp.h>
 #include <cmath>
 #include <hooke/calibrate/method.hpp>
 #include <hooke/calibrate/stiffness_fit.hpp>
@@ -174,6 +175,23 @@ namespace {
 
 // The cylinder of Lloyd Fig. 15 with Eq. 12 springs: errors of the order the paper reports (0.039 cm max for
 // stretch, 0.088 cm for shear), and a compression past the spring model's limit load is not "solved".
+// The per-element fits run on all threads and are summed in element order: the same bits on one thread or two.
+TEST(StiffnessFit, ThreadCountDoesNotChangeTheFit) {
+  const mesh::Mesh box = mesh::tet_box(0.02, 0.01, 0.01, 8, 4, 4);
+  const Material mat{material::Law::kLinear, 14630.0, 0.45};
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const SpringModel serial = stiffness_fit(box, {mat}, {.volume = VolumeTerm::kVolumetric});
+  omp_set_num_threads(2);
+  const SpringModel parallel = stiffness_fit(box, {mat}, {.volume = VolumeTerm::kVolumetric});
+  omp_set_num_threads(threads);
+  ASSERT_EQ(serial.pairs, parallel.pairs);
+  EXPECT_EQ(serial.stiffness, parallel.stiffness);
+  EXPECT_EQ(serial.rest_length, parallel.rest_length);
+  EXPECT_EQ(serial.volume_stiffness, parallel.volume_stiffness);
+  EXPECT_GT(serial.stiffness.minCoeff(), 0.0);
+}
+
 TEST(CompareCylinder, LloydTetErrorsOfThePapersOrderAndNoCollapsedAnswer) {
   const mesh::Mesh m = io::read_mesh(HOOKE_MESH_DATA "/cylinder.msh");
   const Material mat{Law::kLinear, 14630.0, 0.25};

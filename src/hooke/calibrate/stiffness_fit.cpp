@@ -1,5 +1,6 @@
 #include <Eigen/LU>
 #include <array>
+#include <exception>
 #include <hooke/calibrate/cauchy_split.hpp>
 #include <hooke/calibrate/detail/element_springs.hpp>
 #include <hooke/calibrate/stiffness_fit.hpp>
@@ -120,6 +121,50 @@ VecX fit_nonnegative(const MatX& target, const std::vector<MatX>& bases, double*
   return best;
 }
 
+namespace {
+
+// One element's fit (Sec. 4.2.1): the non-negative coefficients of its bases (springs, then the fitted volume
+// term, then +/- each quad self-stress state) that come closest to its FEM stiffness. Reads `acc` only.
+struct ElementFit {
+  VecX c;       // the coefficients of the element's bases
+  MatX states;  // quads: the self-stress states of Eq. 11 (one column each)
+};
+ElementFit fit_element(const mesh::Mesh& m, const std::vector<material::Material>& materials,
+                       const StiffnessFitOptions& options, const detail::EdgeAccumulator& acc, int e) {
+  using mesh::ElementKind;
+  const int npe = mesh::nodes_per_element(m.kind), d = m.dim();
+  const material::Material& mat = materials.size() == 1 ? materials[0] : materials[static_cast<size_t>(e)];
+  MatX p(npe, d);
+  for (int a = 0; a < npe; ++a) p.row(a) = m.nodes.row(m.elements(e, a));
+  MatX k_fem;
+  if (m.kind == ElementKind::kTet)
+    k_fem = fem::tet4_stiffness(p, fit_target(mat, options));
+  else if (m.kind == ElementKind::kQuad)
+    k_fem = fem::quad4_stiffness(p, mat);
+  else
+    k_fem = fem::cst_stiffness(p, mat);
+  std::vector<MatX> bases;
+  for (const auto& lp : acc.local_pairs()) bases.push_back(unit_spring(p, lp[0], lp[1]));
+  if (options.volume == VolumeTerm::kFitted) bases.push_back(unit_volume(p));
+  // Quads: the prestrain of Eq. 11 as well. Its isotropic stiffness part a_s I must be a self-stress of the
+  // element (else the rest shape is not an equilibrium), a_s = alpha * state_s with alpha of either sign:
+  // two non-negative bases, +state and -state.
+  ElementFit out;
+  if (m.kind == ElementKind::kQuad) out.states = self_stress(p, acc.local_pairs());
+  for (Eigen::Index st = 0; st < out.states.cols(); ++st) {
+    MatX iso = MatX::Zero(k_fem.rows(), k_fem.cols());
+    for (size_t s = 0; s < acc.local_pairs().size(); ++s)
+      iso += out.states(static_cast<Eigen::Index>(s), st) *
+             unit_prestress(d, npe, acc.local_pairs()[s][0], acc.local_pairs()[s][1]);
+    bases.push_back(iso);
+    bases.push_back(-iso);
+  }
+  out.c = fit_nonnegative(k_fem, bases);
+  return out;
+}
+
+}  // namespace
+
 SpringModel stiffness_fit(const mesh::Mesh& m, const std::vector<material::Material>& materials,
                           const StiffnessFitOptions& options) {
   using mesh::ElementKind;
@@ -128,36 +173,25 @@ SpringModel stiffness_fit(const mesh::Mesh& m, const std::vector<material::Mater
   const bool volume_terms = options.volume != VolumeTerm::kNone;
   if (volume_terms && m.kind != ElementKind::kTet) throw InvalidArgument("volume terms need a tet mesh");
   detail::EdgeAccumulator acc(m);
-  const int npe = mesh::nodes_per_element(m.kind), d = m.dim();
-  VecX k_volume = VecX::Zero(volume_terms ? m.element_count() : 0);
-  for (int e = 0; e < m.element_count(); ++e) {
-    const material::Material& mat = materials.size() == 1 ? materials[0] : materials[static_cast<size_t>(e)];
-    MatX p(npe, d);
-    for (int a = 0; a < npe; ++a) p.row(a) = m.nodes.row(m.elements(e, a));
-    MatX k_fem;
-    if (m.kind == ElementKind::kTet)
-      k_fem = fem::tet4_stiffness(p, fit_target(mat, options));
-    else if (m.kind == ElementKind::kQuad)
-      k_fem = fem::quad4_stiffness(p, mat);
-    else
-      k_fem = fem::cst_stiffness(p, mat);
-    std::vector<MatX> bases;
-    for (const auto& lp : acc.local_pairs()) bases.push_back(unit_spring(p, lp[0], lp[1]));
-    if (options.volume == VolumeTerm::kFitted) bases.push_back(unit_volume(p));
-    // Quads: the prestrain of Eq. 11 as well. Its isotropic stiffness part a_s I must be a self-stress of the
-    // element (else the rest shape is not an equilibrium), a_s = alpha * state_s with alpha of either sign:
-    // two non-negative bases, +state and -state.
-    const MatX states = m.kind == ElementKind::kQuad ? self_stress(p, acc.local_pairs()) : MatX();
-    const size_t first_state = bases.size();
-    for (Eigen::Index st = 0; st < states.cols(); ++st) {
-      MatX iso = MatX::Zero(k_fem.rows(), k_fem.cols());
-      for (size_t s = 0; s < acc.local_pairs().size(); ++s)
-        iso += states(static_cast<Eigen::Index>(s), st) *
-               unit_prestress(d, npe, acc.local_pairs()[s][0], acc.local_pairs()[s][1]);
-      bases.push_back(iso);
-      bases.push_back(-iso);
+  const int count = m.element_count();
+  VecX k_volume = VecX::Zero(volume_terms ? count : 0);
+  // The per-element fits are independent: they run on all threads (48 us per tet, most of a scan's calibration),
+  // and are added to the springs afterwards in element order, so the sums do not depend on the thread count.
+  std::vector<ElementFit> fits(static_cast<size_t>(count));
+  std::vector<std::exception_ptr> failed(static_cast<size_t>(count));
+#pragma omp parallel for schedule(dynamic, 256)
+  for (int e = 0; e < count; ++e) try {
+      fits[static_cast<size_t>(e)] = fit_element(m, materials, options, acc, e);
+    } catch (...) {
+      failed[static_cast<size_t>(e)] = std::current_exception();
     }
-    const VecX c = fit_nonnegative(k_fem, bases);
+  for (const std::exception_ptr& f : failed)
+    if (f) std::rethrow_exception(f);  // the first failing element's error, whatever the thread count
+  for (int e = 0; e < count; ++e) {
+    const material::Material& mat = materials.size() == 1 ? materials[0] : materials[static_cast<size_t>(e)];
+    const VecX& c = fits[static_cast<size_t>(e)].c;
+    const MatX& states = fits[static_cast<size_t>(e)].states;
+    const size_t first_state = acc.local_pairs().size() + (options.volume == VolumeTerm::kFitted ? 1 : 0);
     const std::vector<int> springs = acc.element_springs(e);
     for (size_t s = 0; s < springs.size(); ++s) acc.add(springs[s], c(static_cast<Eigen::Index>(s)));
     if (options.volume == VolumeTerm::kFitted) k_volume(e) = c(static_cast<Eigen::Index>(springs.size()));
