@@ -81,7 +81,9 @@ def test_certify_matches_compare():
     cert = hooke.certify(model, strain=0.01)
     assert [c["load"] for c in cert] == ["stretch", "compress", "shear"]
     c = hooke.compare(model, "stretch", strain=0.01)
-    assert c.relative_l2 == pytest.approx(cert[0]["relative_l2"], rel=1e-12)
+    # Both converge the model's statics to Newton's tolerance (1e-9 of the force scale); certify starts with one
+    # load step, compare with four, so they agree to that tolerance, not to the last bit.
+    assert c.relative_l2 == pytest.approx(cert[0]["relative_l2"], rel=1e-8)
     assert c.node_error.shape == (mesh.node_count,)
     assert c.fem_positions.shape == (mesh.node_count, 3)
     np.testing.assert_allclose(np.linalg.norm(c.model_positions - c.fem_positions, axis=1), c.node_error)
