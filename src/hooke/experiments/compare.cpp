@@ -15,7 +15,7 @@ VecX rest_of(const mesh::Mesh& m) { return Eigen::Map<const VecX>(m.nodes.data()
 // Comparisons need the equilibria and their stability, not the smallest eigenvalue's value (minutes of shifted
 // factorisations on a scan's 300 000 tets). Newton keeps its factorisation while it reduces the residual fourfold
 // (modified Newton: the same equilibrium to the tolerance; the femur's certificate 46 -> 31 s).
-solve::StaticOptions statics(int load_steps = 4) {
+solve::StaticOptions statics(int load_steps = solve::StaticOptions{}.initial_load_steps) {
   solve::StaticOptions o;
   o.estimate_min_eigenvalue = false;
   o.newton.reuse_factorization = true;
@@ -31,10 +31,11 @@ solve::StaticResult solve_fem(const mesh::Mesh& mesh, const std::vector<material
   return law == material::Law::kLinear ? solve::linear_static(problem) : solve::static_equilibrium(problem, statics());
 }
 
-solve::StaticResult solve_springs(const mesh::Mesh& mesh, const calibrate::SpringModel& springs, const LoadCase& load) {
+solve::StaticResult solve_springs(const mesh::Mesh& mesh, const calibrate::SpringModel& springs, const LoadCase& load,
+                                  int load_steps) {
   model::Problem problem = model::make_problem(calibrate::make_model(mesh, springs));
   apply(load, problem);
-  return solve::static_equilibrium(problem, statics());
+  return solve::static_equilibrium(problem, statics(load_steps));
 }
 
 // Node errors of c.spring_positions against c.fem_positions; `rest` are the spring model's rest positions.
@@ -80,7 +81,7 @@ std::vector<Comparison> compare_models(const mesh::Mesh& mesh, const std::vector
   for (const auto& springs : models) {
     Comparison c;
     c.load = load;
-    const solve::StaticResult msm = solve_springs(mesh, springs, c.load);
+    const solve::StaticResult msm = solve_springs(mesh, springs, c.load, options.load_steps);
     c.springs = springs;
     c.fem_mesh = mesh;
     c.fem_positions = fem.positions;
@@ -112,7 +113,7 @@ Comparison compare_across(const mesh::Mesh& coarse, const mesh::Mesh& fine, cons
   const LoadCase fine_load = make_load_case(fine, options.load, traction, material.thickness);
   const solve::StaticResult fem = solve_fem(fine, {material}, options.reference, fine_load);
   c.springs = calibrate::calibrate(coarse, {material}, options.method);
-  const solve::StaticResult msm = solve_springs(coarse, c.springs, c.load);
+  const solve::StaticResult msm = solve_springs(coarse, c.springs, c.load, options.load_steps);
   const int d = coarse.dim();
   c.fem_mesh_positions = fem.positions;
   c.fem_mesh = fine;

@@ -17,7 +17,7 @@ struct CompareOptions {
   material::Law reference = material::Law::kLinear;  ///< FEM reference law
   /// the model's static solve starts with this many equal load steps (halved where Newton fails; every accepted
   /// state checked for stability), default 4; certify uses 1 at its small strains
-  int load_steps = 4;
+  int load_steps = solve::StaticOptions{}.initial_load_steps;
 };
 
 struct Comparison {

@@ -54,22 +54,10 @@ double SpringBlock::energy(const Eigen::Ref<const VecX>& x) const {
 
 namespace {
 
-// k (1 - l0/l) d: dE/dp_i of one spring with d = p_i - p_j, l = |d| (fixed size: no allocation).
-template <int D>
-void add_spring_gradients(const std::vector<std::array<int, 2>>& pairs, const VecX& stiffness, const VecX& rest,
-                          std::span<const int> springs, const double* x, double* gradient) {
-  using Vec = Eigen::Matrix<double, D, 1>;
-  for (int s : springs) {
-    const auto [i, j] = pairs[static_cast<size_t>(s)];
-    const Vec d = Vec::Map(x + D * i) - Vec::Map(x + D * j);
-    const Vec g = (stiffness(s) * (1.0 - rest(s) / d.norm())) * d;
-    Vec::Map(gradient + D * i) += g;
-    Vec::Map(gradient + D * j) -= g;
-  }
-}
-
-// add_spring_gradients and the springs' energy, returned.
-template <int D>
+// Adds k (1 - l0/l) d, dE/dp_i of one spring with d = p_i - p_j, l = |d|, at i (and its negative at j), and returns
+// the springs' energy sum k/2 (l - l0)^2 when kEnergy (0 otherwise: add_gradient's loop stays without it).
+// Fixed size: no allocation.
+template <int D, bool kEnergy>
 double add_spring_energies_and_gradients(const std::vector<std::array<int, 2>>& pairs, const VecX& stiffness,
                                          const VecX& rest, std::span<const int> springs, const double* x,
                                          double* gradient) {
@@ -78,8 +66,8 @@ double add_spring_energies_and_gradients(const std::vector<std::array<int, 2>>& 
   for (int s : springs) {
     const auto [i, j] = pairs[static_cast<size_t>(s)];
     const Vec d = Vec::Map(x + D * i) - Vec::Map(x + D * j);
-    const double l = d.norm(), stretch = l - rest(s);
-    energy += 0.5 * stiffness(s) * stretch * stretch;
+    const double l = d.norm();
+    if constexpr (kEnergy) energy += 0.5 * stiffness(s) * (l - rest(s)) * (l - rest(s));
     const Vec g = (stiffness(s) * (1.0 - rest(s) / l)) * d;
     Vec::Map(gradient + D * i) += g;
     Vec::Map(gradient + D * j) -= g;
@@ -125,18 +113,20 @@ void add_spring_hessians(const std::vector<std::array<int, 2>>& pairs, const Vec
 void SpringBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
   m_schedule.for_each_chunk([&](std::span<const int> springs, int) {
     if (m_dim == 3)
-      add_spring_gradients<3>(m_pairs, m_stiffness, m_rest_length, springs, x.data(), gradient.data());
+      add_spring_energies_and_gradients<3, false>(m_pairs, m_stiffness, m_rest_length, springs, x.data(),
+                                                  gradient.data());
     else
-      add_spring_gradients<2>(m_pairs, m_stiffness, m_rest_length, springs, x.data(), gradient.data());
+      add_spring_energies_and_gradients<2, false>(m_pairs, m_stiffness, m_rest_length, springs, x.data(),
+                                                  gradient.data());
   });
 }
 
 double SpringBlock::energy_and_add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
   return m_schedule.sum_chunks([&](std::span<const int> springs) {
-    return m_dim == 3 ? add_spring_energies_and_gradients<3>(m_pairs, m_stiffness, m_rest_length, springs, x.data(),
-                                                             gradient.data())
-                      : add_spring_energies_and_gradients<2>(m_pairs, m_stiffness, m_rest_length, springs, x.data(),
-                                                             gradient.data());
+    return m_dim == 3 ? add_spring_energies_and_gradients<3, true>(m_pairs, m_stiffness, m_rest_length, springs,
+                                                                   x.data(), gradient.data())
+                      : add_spring_energies_and_gradients<2, true>(m_pairs, m_stiffness, m_rest_length, springs,
+                                                                   x.data(), gradient.data());
   });
 }
 
