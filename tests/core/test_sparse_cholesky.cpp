@@ -2,6 +2,7 @@
 
 #include <support/matrices.hpp>
 
+#include <cmath>
 #include <hooke/core/sparse_cholesky.hpp>
 #include <hooke/mesh/generators.hpp>
 #include <hooke/mesh/topology.hpp>
@@ -67,7 +68,7 @@ TEST(SparseCholesky, SolveInPlaceMatchesTheResidualForSeveralRightHandSides) {
 TEST(SparseCholesky, SinglePrecisionSolveIsAFloatCopyOfTheFactor) {
   const SparseMatrix a = mesh_laplacian();
   SparseCholesky exact(CholeskyBackend::kCholmod), single(CholeskyBackend::kCholmod);
-  single.set_single_precision_solve(true);
+  single.set_solve_precision(SolvePrecision::kSingle);
   const VecX b = VecX::LinSpaced(a.rows(), -1.0, 2.0);
   for (double scale : {1.0, 3.0}) {  // a second factorisation refreshes the copy
     const SparseMatrix as = a * scale;
@@ -85,10 +86,43 @@ TEST(SparseCholesky, SinglePrecisionSolveIsAFloatCopyOfTheFactor) {
     for (int r = 0; r < 3; ++r)
       EXPECT_EQ(VecX(Eigen::Map<const VecX, 0, Eigen::InnerStride<3>>(x3.data() + r, a.rows())), xs);
   }
-  single.set_single_precision_solve(false);  // back to double on the current factor
+  single.set_solve_precision(SolvePrecision::kDouble);  // back to double on the current factor
   VecX xd = b;
   single.solve_in_place(xd.data(), 1);
   EXPECT_LT((SparseMatrix(a * 3.0) * xd - b).norm(), 1e-11 * b.norm());
+}
+
+// The bfloat16 solve (quasi-Newton's initial Hessian on large meshes) is the exact inverse of L~ L~^T, L~ the factor
+// rounded to 8 significant bits: symmetric and positive definite to float round-off, within ~1e-2 of A^-1, and
+// the same for each of 3 interleaved right-hand sides.
+TEST(SparseCholesky, Bfloat16SolveIsSymmetricPositiveDefiniteAndNearTheExactOne) {
+  const SparseMatrix a = mesh_laplacian();
+  SparseCholesky exact(CholeskyBackend::kCholmod), brain(CholeskyBackend::kCholmod);
+  brain.set_solve_precision(SolvePrecision::kBfloat16);
+  ASSERT_TRUE(exact.factorize(a));
+  ASSERT_TRUE(brain.factorize(a));
+  const VecX u = VecX::LinSpaced(a.rows(), -1.0, 2.0);
+  VecX v(a.rows());
+  for (Eigen::Index i = 0; i < a.rows(); ++i) v(i) = std::sin(0.7 * static_cast<double>(i)) + 0.3;
+  const auto apply = [&](const SparseCholesky& f, const VecX& b) {
+    VecX x = b;
+    f.solve_in_place(x.data(), 1);
+    return x;
+  };
+  const VecX su = apply(brain, u), sv = apply(brain, v), xu = apply(exact, u);
+  const double error = (su - xu).norm() / xu.norm();
+  EXPECT_GT(error, 1e-5) << "the bfloat16 path did not run";
+  EXPECT_LT(error, 1e-2);
+  EXPECT_NEAR(u.dot(sv), v.dot(su), 1e-5 * su.norm() * v.norm());  // symmetric
+  EXPECT_GT(u.dot(su), 0.0);                                       // positive
+  EXPECT_GT(v.dot(sv), 0.0);
+  VecX x3(3 * a.rows());
+  for (Eigen::Index i = 0; i < a.rows(); ++i) x3.segment<3>(3 * i) << u(i), v(i), u(i);
+  brain.solve_in_place(x3.data(), 3);
+  for (int r = 0; r < 3; ++r)
+    EXPECT_EQ(VecX(Eigen::Map<const VecX, 0, Eigen::InnerStride<3>>(x3.data() + r, a.rows())), r == 1 ? sv : su);
+  brain.set_solve_precision(SolvePrecision::kSingle);  // switching copies the current factor
+  EXPECT_LT((apply(brain, u) - xu).norm(), 1e-5 * xu.norm());
 }
 
 // kAuto: Eigen's LDL^T for small systems, CHOLMOD from 1 000 unknowns on.

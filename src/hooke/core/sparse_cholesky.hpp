@@ -13,6 +13,14 @@ enum class CholeskyBackend {
   kEigen     ///< Eigen::SimplicialLDLT (fine below ~5 000 DOFs)
 };
 
+/// The factor solve_in_place reads. Below kDouble the solve is the exact inverse (to float round-off) of L~ L~^T
+/// with L~ the factor rounded, so still symmetric positive definite, for less memory traffic.
+enum class SolvePrecision {
+  kDouble,   ///< CHOLMOD's own factor: relative error ~1e-15 x conditioning
+  kSingle,   ///< a float copy: half the traffic, ~1e-7
+  kBfloat16  ///< a bfloat16 copy (8 significant bits) in float arithmetic: a quarter of the traffic, ~4e-3
+};
+
 class SparseCholesky {
  public:
   explicit SparseCholesky(CholeskyBackend backend = CholeskyBackend::kAuto);
@@ -31,11 +39,10 @@ class SparseCholesky {
   /// solves on CHOLMOD's supernodal factor, or on a copy of Eigen's factor made at the first call after a
   /// factorisation. Allocates nothing after the first call. @pre factorize() returned true
   void solve_in_place(double* b, int nrhs) const;
-  /// With `on`, solve_in_place on the CHOLMOD backend uses a single-precision copy of the factor, made at each
-  /// factorisation (half the memory traffic of the triangular solves; relative error about 1e-7 x the condition
-  /// number's effect on the solve): for preconditioners such as quasi-Newton's initial Hessian, never for a
-  /// solution. solve() and the Eigen backend stay in double precision. Default off.
-  void set_single_precision_solve(bool on);
+  /// The precision of solve_in_place on the CHOLMOD backend: below kDouble it solves on a reduced-precision copy
+  /// of the factor, made at each factorisation (see SolvePrecision): for preconditioners such as quasi-Newton's
+  /// initial Hessian, never for a solution. solve() and the Eigen backend stay in double precision.
+  void set_solve_precision(SolvePrecision precision);
   /// "cholmod" or "eigen-ldlt".
   std::string_view backend_name() const;
 
