@@ -29,7 +29,7 @@ void print_summary(const SimulateCli& o, const calibrate::CalibratedModel& model
                    const experiments::SimulationSummary& s, const std::string& pvd, int frames) {
   const auto steps = static_cast<double>(s.step_ms.size());
   std::printf("hooke simulate: %s, %d nodes, %s model, %s, dt %.3g s, %zu steps (%.4g s)\n", model.mesh.source.c_str(),
-              model.mesh.node_count(), model.method.c_str(), o.integrator.integrator.c_str(), o.run.dt,
+              model.mesh.node_count(), model.method.c_str(), o.integrator.integrator.c_str(), o.run.dynamics.dt,
               s.step_ms.size(), s.time);
   std::printf("  time      %.4g ms/step median, %.4g ms/step p95; %.3g solver iterations per step\n",
               experiments::quantile(s.step_ms, 0.5), experiments::quantile(s.step_ms, 0.95),
@@ -69,16 +69,10 @@ Action add_simulate_command(CLI::App& app) {
   o->in.law = "stvk";
   CLI::App* cmd = app.add_subcommand("simulate", "Simulate a calibrated model (or the FEM model) in time");
   add_model_source_options(cmd, o->in);
-  cmd->add_option("--influence-radius", o->run.influence_radius,
-                  "surface: radius of influence of the probe's interaction weights (Eq. 4), m (default: half the "
-                  "bounding-box diagonal)");
   cmd->add_option("--law", o->in.law, "FEM law with --method fem: linear, stvk, neohookean")->capture_default_str();
   add_integrator_options(cmd, o->integrator, o->run.simulator);
-  cmd->add_option("--dt", o->run.dt, "Time step, s")->capture_default_str();
+  add_dynamics_options(cmd, o->run.dynamics);
   cmd->add_option("--steps", o->run.steps, "Number of steps")->capture_default_str();
-  cmd->add_flag("--gravity", o->run.gravity, "Gravity 9.81 m/s^2 down the vertical axis (y in 2D, z in 3D)");
-  cmd->add_option("--damping-mass", o->run.damping_mass, "Rayleigh alpha, 1/s")->capture_default_str();
-  cmd->add_option("--damping-stiffness", o->run.damping_stiffness, "Rayleigh beta, s")->capture_default_str();
   cmd->add_flag("--free", o->free_body, "Do not clamp the bottom nodes");
   cmd->add_flag("--allow-unconverged", o->run.allow_unconverged,
                 "Keep going (with a warning) when a step ends above the Newton tolerance instead of failing (exit 3)");

@@ -6,6 +6,7 @@
 #include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/mesh/tetrahedralize.hpp>
+#include <hooke/solve/dynamics_setup.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <string>
 #include <vector>
@@ -71,6 +72,10 @@ struct IntegratorInput {
 void add_integrator_options(CLI::App* cmd, IntegratorInput& in, solve::SimulatorOptions& options);
 /// Sets the named choices of `in` in `options`. @throws InvalidArgument for an unknown name
 void apply_integrator_names(const IntegratorInput& in, solve::SimulatorOptions& options);
+
+/// Registers every solve::dynamics_fields() entry as --NAME on `cmd` (--dt, --gravity, --damping-mass, ...), bound
+/// to `setup` (whose values are the defaults shown), as `simulate` and `view` take them.
+void add_dynamics_options(CLI::App* cmd, solve::DynamicsSetup& setup);
 
 /// Every number given to an option of type FLOAT of the parsed (sub)commands is finite: "nan", "inf" and overflowing
 /// values are refused before anything runs (an unchecked NaN slips through comparisons).

@@ -163,6 +163,16 @@ int parse_and_run(CLI::App& app, int argc, char** argv, const char* program, con
   }
 }
 
+void add_dynamics_options(CLI::App* cmd, solve::DynamicsSetup& setup) {
+  for (const solve::DynamicsField& f : solve::dynamics_fields()) {
+    const std::string flag = "--" + std::string(f.name), help(f.help);
+    if (f.number)
+      cmd->add_option(flag, setup.*f.number, help)->capture_default_str();
+    else
+      cmd->add_flag(flag, setup.*f.flag, help);
+  }
+}
+
 void add_integrator_options(CLI::App* cmd, IntegratorInput& in, solve::SimulatorOptions& options) {
   cmd->add_option("--integrator", in.integrator,
                   "quasi-newton (every model at a fixed budget per step, the real-time default), implicit-euler "

@@ -83,7 +83,7 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
 
   interactive::LiveSettings& e = state.edit;
   // A model whose constants hooke cannot remake ("file": a hand-tuned model file) keeps its material.
-  const bool fixed_material = e.method == "file";
+  const bool fixed_material = calibrate::model_kind_of_method(e.method) == calibrate::ModelKind::kFile;
   if (fixed_material)
     ImGui::TextWrapped("This model's constants are its own: E and nu are fixed (choose a method to recalibrate).");
   ImGui::BeginDisabled(fixed_material);
@@ -99,9 +99,10 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
   r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
   ImGui::EndDisabled();
   std::vector<std::string> methods = calibrate::model_method_names();
-  methods.insert(methods.begin(), "file");
+  methods.insert(methods.begin(), std::string(calibrate::model_kind_name(calibrate::ModelKind::kFile)));
   r.apply_settings |= combo("method", e.method, methods);
-  if (e.method == "surface") {  // Arnab & Raja's distribution schemes (their Sec. Experimental Findings)
+  if (calibrate::model_kind_of_method(e.method) ==
+      calibrate::ModelKind::kSurface) {  // Arnab & Raja's distribution schemes (their Sec. Experimental Findings)
     std::string scheme(calibrate::surface_scheme_name(e.surface.scheme));
     if (combo("scheme", scheme, {"A", "B", "C", "D"})) {
       e.surface.scheme = calibrate::surface_scheme_from_name(scheme);
@@ -118,7 +119,7 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
     r.apply_settings = true;
   }
   if (e.simulator.integrator == solve::Integrator::kLocalGlobal) {
-    std::string global(e.simulator.global_solve == solve::GlobalSolve::kDirect ? "direct" : "chebyshev");
+    std::string global(solve::global_solve_name(e.simulator.global_solve));
     if (combo("global solve", global, {"direct", "chebyshev"})) {
       e.simulator.global_solve = solve::global_solve_from_name(global);
       r.apply_settings = true;
@@ -136,19 +137,20 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
     if (ImGui::SliderInt("max iterations", &iterations, 1, 30)) e.simulator.quasi_newton.max_iterations = iterations;
     r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
   }
-  float dt_ms = static_cast<float>(1e3 * e.dt);
+  float dt_ms = static_cast<float>(1e3 * e.dynamics.dt);
   if (ImGui::InputFloat("dt (ms)", &dt_ms, 0.1f, 1.0f, "%.3f", ImGuiInputTextFlags_EnterReturnsTrue) && dt_ms > 0.0f) {
-    e.dt = 1e-3 * dt_ms;
+    e.dynamics.dt = 1e-3 * dt_ms;
     r.apply_settings = true;
   }
-  float alpha = static_cast<float>(e.damping_mass), beta = static_cast<float>(1e3 * e.damping_stiffness);
+  float alpha = static_cast<float>(e.dynamics.damping_mass),
+        beta = static_cast<float>(1e3 * e.dynamics.damping_stiffness);
   ImGui::SliderFloat("damping alpha (1/s)", &alpha, 0.0f, 50.0f);
-  if (ImGui::IsItemEdited()) e.damping_mass = alpha;
+  if (ImGui::IsItemEdited()) e.dynamics.damping_mass = alpha;
   r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
   ImGui::SliderFloat("damping beta (ms)", &beta, 0.0f, 10.0f);
-  if (ImGui::IsItemEdited()) e.damping_stiffness = 1e-3 * beta;
+  if (ImGui::IsItemEdited()) e.dynamics.damping_stiffness = 1e-3 * beta;
   r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
-  r.apply_settings |= ImGui::Checkbox("gravity", &e.gravity);
+  r.apply_settings |= ImGui::Checkbox("gravity", &e.dynamics.gravity);
   ImGui::Separator();
 
   std::string field = interactive::color_field_name(state.field);

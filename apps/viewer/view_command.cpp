@@ -35,14 +35,11 @@ int run_view(ViewCli o) {
   v.settings.method = o.in.model_path.empty() ? o.in.method : interactive::live_method_for(v.model);
   v.settings.material = v.model.material;
   v.settings.density = v.model.density;
-  if (v.model.method == "surface") v.settings.surface = cli::surface_options(o.in.surface);
+  if (calibrate::model_kind(v.model) == calibrate::ModelKind::kSurface)
+    v.settings.surface = cli::surface_options(o.in.surface);
   v.settings.simulator = o.settings.simulator;
   cli::apply_integrator_names(o.integrator, v.settings.simulator);
-  v.settings.dt = o.settings.dt;
-  v.settings.gravity = o.settings.gravity;
-  v.settings.damping_mass = o.settings.damping_mass;
-  v.settings.damping_stiffness = o.settings.damping_stiffness;
-  v.settings.influence_radius = o.settings.influence_radius;
+  v.settings.dynamics = o.settings.dynamics;
   interactive::LiveSimulation check(v.model, v.settings);  // a model the integrator cannot run fails here
   (void)check;
   if (!o.script.empty()) v.script = interactive::read_script(o.script);
@@ -68,14 +65,7 @@ std::function<int()> add_view_options(CLI::App* cmd) {
   cli::add_model_source_options(cmd, o->in);
   cmd->add_option("--law", o->in.law, "FEM law with --method fem: linear, stvk, neohookean")->capture_default_str();
   cli::add_integrator_options(cmd, o->integrator, o->settings.simulator);
-  cmd->add_option("--dt", o->settings.dt, "Time step, s; the physics runs one step per dt of wall time")
-      ->capture_default_str();
-  cmd->add_flag("--gravity", o->settings.gravity, "Gravity 9.81 m/s^2 down the vertical axis");
-  cmd->add_option("--damping-mass", o->settings.damping_mass, "Rayleigh alpha, 1/s")->capture_default_str();
-  cmd->add_option("--damping-stiffness", o->settings.damping_stiffness, "Rayleigh beta, s")->capture_default_str();
-  cmd->add_option("--influence-radius", o->settings.influence_radius,
-                  "surface: radius of influence of the probe's Eq. 4 weights, m (default: half the bounding-box "
-                  "diagonal)");
+  cli::add_dynamics_options(cmd, o->settings.dynamics);
   cmd->add_option("--grab-radius", o->run.grab_radius, "Grab the surface nodes within this distance too, m")
       ->capture_default_str();
   cmd->add_option("--colormap", o->colormap, "none, displacement, error, strain, weights")->capture_default_str();

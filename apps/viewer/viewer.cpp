@@ -186,7 +186,7 @@ class Viewer {
     m_loop.with([&](const interactive::LiveSimulation& sim) {
       model = sim.model();
       clamped = sim.clamped_nodes();
-      gravity = sim.settings().gravity;
+      gravity = sim.settings().dynamics.gravity;
     });
     const std::vector<int> grabbed = m_snap.grabbed;
     VecX targets = m_snap.grab_positions;
@@ -401,7 +401,7 @@ class Viewer {
         {"probe_force_n", f.norm()},
         {"young_pa", m_snap.settings.material.youngs_modulus},
         {"poisson", m_snap.settings.material.poisson_ratio},
-        {"dt_s", m_snap.settings.dt}};
+        {"dt_s", m_snap.settings.dynamics.dt}};
     for (int a = 0; a < m_dim; ++a) extra.emplace_back(std::string("probe_force_") + "xyz"[a], f(a));
     if (m_state.ghost_force.size() == m_dim) extra.emplace_back("fem_holding_force_n", m_state.ghost_force.norm());
     if (m_haptics) {

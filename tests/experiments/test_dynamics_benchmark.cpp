@@ -44,10 +44,10 @@ TEST_P(BenchmarkCylinderUnderGravity, StaysAdmissible) {
   o.simulator.newton.linear_solver = GetParam().linear_solver;
   o.steps = GetParam().steps;
   o.every = 1;  // simulate() checks every frame: finite, no inverted element
-  o.gravity = true;
+  o.dynamics.gravity = true;
   const bool explicit_step = GetParam().integrator == solve::Integrator::kSymplecticEuler ||
                              GetParam().integrator == solve::Integrator::kVelocityVerlet;
-  o.dt = explicit_step ? 5e-5 : 1e-3;  // the explicit limit is 6.5e-5 s here
+  o.dynamics.dt = explicit_step ? 5e-5 : 1e-3;  // the explicit limit is 6.5e-5 s here
   double sag = 0.0;
   const SimulationSummary s = simulate(model, o, [&](int, double, const VecX& u, const VecX&) {
     for (Eigen::Index i = 2; i < u.size(); i += 3) sag = std::max(sag, -u(i));
@@ -70,14 +70,14 @@ INSTANTIATE_TEST_SUITE_P(Integrators, BenchmarkCylinderUnderGravity,
                                          Case{solve::Integrator::kQuasiNewton, solve::GlobalSolve::kDirect, 300},
                                          Case{solve::Integrator::kImplicitEuler, solve::GlobalSolve::kDirect, 20},
                                          Case{solve::Integrator::kQuasiStatic, solve::GlobalSolve::kDirect, 20}),
-    [](const testing::TestParamInfo<Case>& p) {
-      std::string name(solve::integrator_name(p.param.integrator));
-      if (p.param.global_solve == solve::GlobalSolve::kChebyshev) name += "_chebyshev";
-      if (p.param.linear_solver == solve::NewtonLinearSolver::kConjugateGradient) name += "_cg";
-      for (char& c : name)
-        if (c == '-') c = '_';
-      return name;
-    });
+                         [](const testing::TestParamInfo<Case>& p) {
+                           std::string name(solve::integrator_name(p.param.integrator));
+                           if (p.param.global_solve == solve::GlobalSolve::kChebyshev) name += "_chebyshev";
+                           if (p.param.linear_solver == solve::NewtonLinearSolver::kConjugateGradient) name += "_cg";
+                           for (char& c : name)
+                             if (c == '-') c = '_';
+                           return name;
+                         });
 
 }  // namespace
 }  // namespace hooke::experiments

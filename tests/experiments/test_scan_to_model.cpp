@@ -33,8 +33,8 @@ TEST(ScanToModel, FemurIsTetrahedralizedCalibratedCertifiedAndSimulated) {
     EXPECT_LE(c.relative_l2, 0.15) << c.load << ": " << c.relative_l2;
   SimulationOptions so;
   so.steps = 300;
-  so.gravity = true;
-  so.damping_mass = 10.0;
+  so.dynamics.gravity = true;
+  so.dynamics.damping_mass = 10.0;
   const SimulationSummary s = simulate(model, so, [](int, double, const VecX&, const VecX&) {});
   EXPECT_EQ(s.step_ms.size(), 300u);
   EXPECT_EQ(s.not_converged, 0);
@@ -65,8 +65,8 @@ TEST(ScanToModel, SurfaceModelOfAFemurThatIsNotStarShaped) {
       calibrate::calibrate_model(surface, {material::Law::kLinear, 1e6, 0.45}, mo);
   SimulationOptions so;
   so.steps = 300;
-  so.gravity = true;
-  so.damping_mass = 10.0;
+  so.dynamics.gravity = true;
+  so.dynamics.damping_mass = 10.0;
   VecX last;
   const SimulationSummary run = simulate(rubber, so, [&](int, double, const VecX& u, const VecX&) { last = u; });
   EXPECT_EQ(run.step_ms.size(), 300u);

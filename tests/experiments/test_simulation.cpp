@@ -32,8 +32,8 @@ SimulationOptions gravity_run(solve::Integrator integrator) {
   o.simulator.integrator = integrator;
   o.steps = 30;
   o.every = 10;
-  o.gravity = true;
-  o.damping_mass = 2.0;
+  o.dynamics.gravity = true;
+  o.dynamics.damping_mass = 2.0;
   o.probe_node = 5;
   o.probe_offset = Vec3(0.0, 1e-3, 0.0);
   return o;
@@ -45,7 +45,7 @@ TEST_P(ModelFromFile, RunsTheTrajectoryOfTheCalibratedModel) {
   const calibrate::CalibratedModel a = cylinder();
   const calibrate::CalibratedModel b = calibrate::parse_model(calibrate::model_json(a), "m.json");
   SimulationOptions o = gravity_run(GetParam());
-  if (GetParam() == solve::Integrator::kSymplecticEuler) o.dt = 1e-5;
+  if (GetParam() == solve::Integrator::kSymplecticEuler) o.dynamics.dt = 1e-5;
   const auto fa = run(a, o), fb = run(b, o);
   ASSERT_EQ(fa.size(), 4u);
   ASSERT_EQ(fb.size(), fa.size());
@@ -127,11 +127,11 @@ TEST(Simulation, RefusesOptionsOutOfRange) {
     change(o);
     EXPECT_THROW(run(m, o), InvalidArgument);
   };
-  refuses([](SimulationOptions& o) { o.dt = 0.0; });
-  refuses([](SimulationOptions& o) { o.dt = std::nan(""); });
+  refuses([](SimulationOptions& o) { o.dynamics.dt = 0.0; });
+  refuses([](SimulationOptions& o) { o.dynamics.dt = std::nan(""); });
   refuses([](SimulationOptions& o) { o.steps = 0; });
-  refuses([](SimulationOptions& o) { o.damping_mass = -1.0; });
-  refuses([](SimulationOptions& o) { o.damping_stiffness = std::nan(""); });
+  refuses([](SimulationOptions& o) { o.dynamics.damping_mass = -1.0; });
+  refuses([](SimulationOptions& o) { o.dynamics.damping_stiffness = std::nan(""); });
   refuses([](SimulationOptions& o) {
     o.simulator.integrator = solve::Integrator::kLocalGlobal;
     o.simulator.local_global_iterations = 0;

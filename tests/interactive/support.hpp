@@ -10,7 +10,7 @@ inline LiveSettings settings(const std::string& method = "lloyd-tet", double nu 
   LiveSettings s;
   s.method = method;
   s.material = {material::Law::kLinear, 14630.0, nu};
-  s.damping_mass = 60.0;
+  s.dynamics.damping_mass = 60.0;
   return s;
 }
 

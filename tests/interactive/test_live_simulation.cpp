@@ -117,7 +117,7 @@ TEST(LiveSimulation, AFailedRecalibrationChangesNothing) {
   s.method = "surface";  // needs a closed surface-triangle mesh
   EXPECT_THROW(sim.apply(s), Error);
   s = sim.settings();
-  s.dt = -1.0;
+  s.dynamics.dt = -1.0;
   EXPECT_THROW(sim.apply(s), InvalidArgument);
   s = sim.settings();
   s.material.poisson_ratio = 0.5;
@@ -150,7 +150,7 @@ TEST(ApplySetting, ParsesAndRefuses) {
   apply_setting(s, "gravity", "on");
   apply_setting(s, "integrator", "local-global");
   EXPECT_EQ(s.material.youngs_modulus, 2e4);
-  EXPECT_TRUE(s.gravity);
+  EXPECT_TRUE(s.dynamics.gravity);
   EXPECT_EQ(s.simulator.integrator, solve::Integrator::kLocalGlobal);
   EXPECT_THROW(apply_setting(s, "young", "nan"), InvalidArgument);
   EXPECT_THROW(apply_setting(s, "young", "1e4x"), InvalidArgument);
@@ -191,9 +191,9 @@ TEST(LiveSimulation, AModelFileIsRecalibratedByItsMethodOrRefusesANewMaterial) {
   EXPECT_EQ(own.settings().material.poisson_ratio, 0.3);
   EXPECT_EQ(own.model().springs.stiffness, tuned.springs.stiffness);
   f.material.poisson_ratio = 0.3;
-  f.damping_mass = 10.0;  // other settings still apply
+  f.dynamics.damping_mass = 10.0;  // other settings still apply
   own.apply(f);
-  EXPECT_EQ(own.settings().damping_mass, 10.0);
+  EXPECT_EQ(own.settings().dynamics.damping_mass, 10.0);
 }
 
 }  // namespace

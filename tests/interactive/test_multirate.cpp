@@ -18,8 +18,8 @@ namespace {
 
 LiveSimulation grabbed(const mesh::Mesh& m, double dt, HapticStiffness k = HapticStiffness::kSecant) {
   LiveSettings s = settings("any-nu-tet", 0.45);
-  s.damping_mass = 20.0;
-  s.dt = dt;
+  s.dynamics.damping_mass = 20.0;
+  s.dynamics.dt = dt;
   s.haptic_stiffness = k;
   LiveSimulation sim(m, s);
   sim.grab({top_node(m)});
@@ -58,8 +58,8 @@ TEST(Multirate, ForceWithinFivePercentOfTheFullRateDrag) {
 TEST(HapticLoop, RendersTheHoldingForceBesideTheDeformation) {
   const mesh::Mesh m = cylinder();
   LiveSettings s = settings("any-nu-tet", 0.45);
-  s.damping_mass = 60.0;
-  s.dt = 0.01;
+  s.dynamics.damping_mass = 60.0;
+  s.dynamics.dt = 0.01;
   LiveSimulation sim(m, s);
   const int node = top_node(m);
   sim.grab({node});

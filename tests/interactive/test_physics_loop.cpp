@@ -118,7 +118,7 @@ TEST(PhysicsLoop, AchievedRateIsStepsPerWallSecond) {
     EXPECT_GE(s.steps, 20);
   }
   LiveSettings fast = settings();
-  fast.dt = 1e-5;
+  fast.dynamics.dt = 1e-5;
   PhysicsLoop loop(LiveSimulation(cylinder(), fast), true);
   loop.start();
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
@@ -161,7 +161,7 @@ TEST(PhysicsLoop, EveryMemberIsServedWithinAStepOrTwo) {
   PhysicsLoop loop(LiveSimulation(cylinder(), settings()), false);
   loop.start();
   while (loop.stats().steps < 20) std::this_thread::yield();
-  const double dt = settings().dt;
+  const double dt = settings().dynamics.dt;
   std::vector<double> stats_steps, post_steps, pause_steps, snapshot_steps;
   Snapshot snap;
   for (int k = 0; k < 500; ++k) {
@@ -311,7 +311,7 @@ TEST(Guarded, OneThreadStepsAnotherDrags) {
   for (int k = 0; k < 200; ++k) sim.with([](LiveSimulation& s) { s.step(); });
   stepping = false;
   device.join();
-  EXPECT_NEAR(sim.with([](const LiveSimulation& s) { return s.time(); }), 200 * settings().dt, 1e-12);
+  EXPECT_NEAR(sim.with([](const LiveSimulation& s) { return s.time(); }), 200 * settings().dynamics.dt, 1e-12);
 }
 
 // A job submitted while an older one runs starts at once (the older one is not waited for) and only the newest

@@ -75,7 +75,7 @@ void define_live_simulation(py::module_& m) {
              s.material = model.material;
              s.density = model.density;
              s.simulator.integrator = solve::integrator_from_name(integrator);
-             s.dt = dt;
+             s.dynamics.dt = dt;
              return std::make_unique<SharedSimulation>(LiveSimulation(model, with_settings(s, kwargs)));
            }),
            py::arg("model"), py::arg("integrator") = "quasi-newton", py::arg("dt") = 1e-3,

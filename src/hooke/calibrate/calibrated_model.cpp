@@ -1,11 +1,47 @@
 #include <cmath>
 #include <hooke/calibrate/calibrated_model.hpp>
+#include <hooke/calibrate/method.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/core/name_table.hpp>
 #include <hooke/mesh/reorder.hpp>
 #include <hooke/surface/normal_cone.hpp>
 #include <string>
 
 namespace hooke::calibrate {
+
+namespace {
+constexpr NameTable<ModelKind, 4> kKinds{"model kind",
+                                         {{{ModelKind::kSprings, "springs"},
+                                           {ModelKind::kSurface, "surface"},
+                                           {ModelKind::kFem, "fem"},
+                                           {ModelKind::kFile, "file"}}}};
+
+// The kind of a model factory name, or nullopt for a name it does not know.
+std::optional<ModelKind> kind_of_name(std::string_view method) {
+  if (method == "auto") return ModelKind::kSprings;
+  for (const std::string_view name : method_names())
+    if (name == method) return ModelKind::kSprings;
+  for (const auto& [kind, name] : kKinds.entries)
+    if (name == method && kind != ModelKind::kSprings) return kind;
+  return std::nullopt;
+}
+}  // namespace
+
+std::string_view model_kind_name(ModelKind kind) { return kKinds.name(kind); }
+
+ModelKind model_kind_of_method(std::string_view method) {
+  if (const std::optional<ModelKind> kind = kind_of_name(method)) return *kind;
+  std::string all = "auto";
+  for (const std::string_view name : method_names()) all += ", " + std::string(name);
+  for (const ModelKind kind : {ModelKind::kSurface, ModelKind::kFem, ModelKind::kFile})
+    all += ", " + std::string(model_kind_name(kind));
+  throw InvalidArgument("unknown model method '" + std::string(method) + "' (use " + all + ")");
+}
+
+ModelKind model_kind(const CalibratedModel& model) {
+  if (model.surface) return ModelKind::kSurface;
+  return kind_of_name(model.method).value_or(ModelKind::kFile);
+}
 namespace {
 
 std::string entry(const std::string& what, Eigen::Index i) { return what + "[" + std::to_string(i) + "]"; }
@@ -111,7 +147,7 @@ void validate_model(const CalibratedModel& m, const std::string& source) {
     if (m.mesh.kind != mesh::ElementKind::kSurfaceTriangle) c.fail("surface", "needs a surface-triangle mesh");
     validate_surface(*m.surface, c, n);
   }
-  if (m.method != "fem" && s.pairs.empty() && s.volume_tets.rows() == 0 && !m.surface)
+  if (model_kind(m) != ModelKind::kFem && s.pairs.empty() && s.volume_tets.rows() == 0 && !m.surface)
     c.fail("springs", "the model has no springs, volume terms or surface terms");
 }
 

@@ -9,9 +9,23 @@
 #include <hooke/surface/volume_penalty_block.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hooke::calibrate {
+
+/// What a model is made of: it decides how the model is built, compared and remade, never its method's spelling.
+enum class ModelKind {
+  kSprings,  ///< "springs": springs (with volume or area terms) of a calibration method, remade from E and nu
+  kSurface,  ///< "surface": Arnab & Raja's surface model
+  kFem,      ///< "fem": the finite elements of the material's law
+  kFile      ///< "file": constants hooke cannot remake (identified, hand-tuned, made by another program)
+};
+/// Stable names of the kinds ("springs", "surface", "fem", "file").
+std::string_view model_kind_name(ModelKind kind);
+/// The kind a model factory name stands for: a calibration method or "auto" kSprings, "surface", "fem", and "file"
+/// (the model's own constants). @throws InvalidArgument for any other name, listing them
+ModelKind model_kind_of_method(std::string_view method);
 
 /// The inner terms of Arnab & Raja's surface model, per node of the (outward-oriented) surface mesh.
 struct SurfaceTerms {
@@ -54,6 +68,10 @@ struct CalibratedModel {
   std::vector<std::string> warnings;    ///< the method's validity warnings (calibrate::validity_warnings)
   std::vector<CertificateCase> certificate;  ///< measured error against FEM, when certified
 };
+
+/// The kind of `model`: kSurface with surface terms, else its method's kind (model_kind_of_method), kFile for a
+/// method hooke does not know (an identified or hand-tuned model's).
+ModelKind model_kind(const CalibratedModel& model);
 
 /// Checks that `model` is consistent: node and element indices in range, finite positions, k >= 0, l0 > 0,
 /// volume terms on tets with V0 > 0 and k_V >= 0, masses > 0,

@@ -7,21 +7,23 @@
 #include <hooke/calibrate/stiffness_scale.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
+#include <hooke/core/name_table.hpp>
 #include <hooke/mesh/measure.hpp>
 
 namespace hooke::calibrate {
 namespace {
 
-struct Named {
-  Method method;
-  std::string_view name;
-};
-constexpr Named kNames[] = {
-    {Method::kVanGelder, "vangelder"},          {Method::kLloydEquilateral, "lloyd-equilateral"},
-    {Method::kLloydTriangle, "lloyd-triangle"}, {Method::kLloydSquare, "lloyd-square"},
-    {Method::kLloydTet, "lloyd-tet"},           {Method::kLloydTetVolume, "lloyd-tet-volume"},
-    {Method::kStiffnessFit, "stiffness-fit"},   {Method::kStiffnessFitVolume, "stiffness-fit-volume"},
-    {Method::kAnyNuTet, "any-nu-tet"},          {Method::kAnyNuTriangle, "any-nu-triangle"}};
+constexpr NameTable<Method, 10> kNames{"calibration method",
+                                       {{{Method::kVanGelder, "vangelder"},
+                                         {Method::kLloydEquilateral, "lloyd-equilateral"},
+                                         {Method::kLloydTriangle, "lloyd-triangle"},
+                                         {Method::kLloydSquare, "lloyd-square"},
+                                         {Method::kLloydTet, "lloyd-tet"},
+                                         {Method::kLloydTetVolume, "lloyd-tet-volume"},
+                                         {Method::kStiffnessFit, "stiffness-fit"},
+                                         {Method::kStiffnessFitVolume, "stiffness-fit-volume"},
+                                         {Method::kAnyNuTet, "any-nu-tet"},
+                                         {Method::kAnyNuTriangle, "any-nu-triangle"}}}};
 
 void require_kind(const mesh::Mesh& m, bool ok, Method method, const char* what) {
   if (!ok)
@@ -101,18 +103,13 @@ std::vector<std::string> validity_warnings(const mesh::Mesh& m, const std::vecto
   return out;
 }
 
-Method method_from_name(std::string_view name) {
-  for (const auto& n : kNames)
-    if (n.name == name) return n.method;
-  std::string all;
-  for (const auto& n : kNames) all += (all.empty() ? "" : ", ") + std::string(n.name);
-  throw InvalidArgument("unknown calibration method '" + std::string(name) + "' (use " + all + ")");
-}
+Method method_from_name(std::string_view name) { return kNames.from_name(name); }
+std::string_view method_name(Method method) { return kNames.name(method); }
 
-std::string_view method_name(Method method) {
-  for (const auto& n : kNames)
-    if (n.method == method) return n.name;
-  return "unknown";
+std::vector<std::string_view> method_names() {
+  std::vector<std::string_view> out;
+  for (const auto& [method, name] : kNames.entries) out.push_back(name);
+  return out;
 }
 
 SpringModel calibrate(const mesh::Mesh& m, const std::vector<material::Material>& materials, Method method) {

@@ -26,6 +26,8 @@ enum class Method {
 
 Method method_from_name(std::string_view name);  ///< @throws InvalidArgument listing the names
 std::string_view method_name(Method method);
+/// Every calibration method's name, in the order of Method.
+std::vector<std::string_view> method_names();
 
 /// Where `method` leaves the assumptions of its derivation on this mesh and material, one sentence each
 /// (empty when it is applied where it is exact): lloyd-equilateral needs equilateral triangles and nu = 1/3

@@ -12,10 +12,6 @@
 namespace hooke::calibrate {
 namespace {
 
-constexpr std::string_view kCalibrationMethods[] = {
-    "vangelder",        "lloyd-equilateral", "lloyd-triangle",       "lloyd-square", "lloyd-tet",
-    "lloyd-tet-volume", "stiffness-fit",     "stiffness-fit-volume", "any-nu-tet",   "any-nu-triangle"};
-
 CalibratedModel surface_model(const mesh::Mesh& mesh, const material::Material& material, const ModelOptions& o) {
   SurfaceOptions so = o.surface;
   so.density = o.density;
@@ -48,9 +44,8 @@ CalibratedModel surface_model(const mesh::Mesh& mesh, const material::Material& 
 
 std::vector<std::string> model_method_names() {
   std::vector<std::string> out{"auto"};
-  out.insert(out.end(), std::begin(kCalibrationMethods), std::end(kCalibrationMethods));
-  out.emplace_back("surface");
-  out.emplace_back("fem");
+  for (const std::string_view name : method_names()) out.emplace_back(name);
+  for (const ModelKind kind : {ModelKind::kSurface, ModelKind::kFem}) out.emplace_back(model_kind_name(kind));
   return out;
 }
 
@@ -75,11 +70,15 @@ std::string method_equation(std::string_view method) {
   if (method == "any-nu-triangle")
     return "hooke's any-nu split: Lloyd et al. 2007 Eq. 9 springs at E_s = 8 mu / 3 and an area term "
            "k_A = (lambda* - mu) t A0 per triangle for lambda* >= mu (nu >= 1/3 in plane stress); below, Eq. 9 at E";
-  if (method == "surface")
-    return "Arnab & Raja: anchors (Eq. 2), volume penalty (Eq. 3, 4), membrane springs of Lloyd et al. Eq. 9";
-  if (method == "fem") return "finite elements (CST, Q4, tet4) of the material's law";
   if (method == "auto") return "the method of smallest measured error for the mesh's element kind and nu";
-  method_from_name(method);  // throws, listing the names
+  switch (model_kind_of_method(method)) {  // throws for an unknown name, listing the names
+    case ModelKind::kSurface:
+      return "Arnab & Raja: anchors (Eq. 2), volume penalty (Eq. 3, 4), membrane springs of Lloyd et al. Eq. 9";
+    case ModelKind::kFem: return "finite elements (CST, Q4, tet4) of the material's law";
+    case ModelKind::kSprings:
+    case ModelKind::kFile: break;
+  }
+  method_from_name(method);  // throws, listing the calibration methods
   return {};
 }
 
@@ -94,7 +93,8 @@ CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material
   material::validate(material);
   if (!(options.density > 0.0) || !std::isfinite(options.density))
     throw InvalidArgument("the density must be a positive number of kg/m^3");
-  if (mesh.kind == mesh::ElementKind::kSurfaceTriangle && options.method != "surface") {
+  const ModelKind kind = model_kind_of_method(options.method);
+  if (mesh.kind == mesh::ElementKind::kSurfaceTriangle && kind != ModelKind::kSurface) {
     mesh::TetrahedralizeReport report;
     const mesh::Mesh tets = mesh::tetrahedralize(mesh, options.tetrahedralize, &report);
     CalibratedModel out = calibrate_model(tets, material, options);
@@ -111,11 +111,11 @@ CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material
     return out;
   }
   CalibratedModel out;
-  if (options.method == "surface") {
+  if (kind == ModelKind::kSurface) {
     out = surface_model(mesh, material, options);
   } else {
     out.mesh = mesh;
-    if (options.method != "fem") {
+    if (kind == ModelKind::kSprings) {
       const Method method = method_from_name(options.method);
       out.warnings = validity_warnings(mesh, {material}, method);
       out.springs = calibrate(mesh, {material}, method);
@@ -134,7 +134,7 @@ BuiltModel build_model(const CalibratedModel& m) {
   const int d = m.mesh.dim();
   BuiltModel out;
   out.model = std::make_shared<model::Model>(d, Eigen::Map<const VecX>(m.mesh.nodes.data(), m.mesh.nodes.size()));
-  if (m.method == "fem") {
+  if (model_kind(m) == ModelKind::kFem) {
     out.model = fem::elastic_model(m.mesh, {m.material});
     return out;
   }

@@ -2,6 +2,7 @@
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
+#include <hooke/core/name_table.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <hooke/mesh/topology.hpp>
 #include <hooke/springs/spring_block.hpp>
@@ -9,20 +10,18 @@
 
 namespace hooke::calibrate {
 
-std::string_view surface_scheme_name(SurfaceScheme scheme) {
-  switch (scheme) {
-    case SurfaceScheme::kA: return "A";
-    case SurfaceScheme::kB: return "B";
-    case SurfaceScheme::kC: return "C";
-    case SurfaceScheme::kD: return "D";
-  }
-  return "?";
-}
+namespace {
+constexpr NameTable<SurfaceScheme, 4> kSchemes{
+    "surface scheme",
+    {{{SurfaceScheme::kA, "A"}, {SurfaceScheme::kB, "B"}, {SurfaceScheme::kC, "C"}, {SurfaceScheme::kD, "D"}}}};
+}  // namespace
+
+std::string_view surface_scheme_name(SurfaceScheme scheme) { return kSchemes.name(scheme); }
 
 SurfaceScheme surface_scheme_from_name(std::string_view name) {
-  for (SurfaceScheme s : {SurfaceScheme::kA, SurfaceScheme::kB, SurfaceScheme::kC, SurfaceScheme::kD})
-    if (name.size() == 1 && std::toupper(static_cast<unsigned char>(name[0])) == surface_scheme_name(s)[0]) return s;
-  throw InvalidArgument("unknown surface scheme '" + std::string(name) + "' (A, B, C, D)");
+  std::string upper(name);
+  for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return kSchemes.from_name(upper.size() == 1 ? std::string_view(upper) : name);
 }
 
 namespace {

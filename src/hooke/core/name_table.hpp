@@ -26,7 +26,7 @@ struct NameTable {
       if (n == name) return e;
       valid += (valid.empty() ? "" : ", ") + std::string(n);
     }
-    throw InvalidArgument("unknown " + std::string(what) + " '" + std::string(name) + "' (" + valid + ")");
+    throw InvalidArgument("unknown " + std::string(what) + " '" + std::string(name) + "' (use " + valid + ")");
   }
 };
 

@@ -132,7 +132,8 @@ Comparison compare_calibrated(const calibrate::CalibratedModel& model, const Com
   Comparison c;
   c.springs = model.springs;
   if (!model.surface) {
-    if (model.method == "fem") throw InvalidArgument("compare: the model is the FEM model itself");
+    if (calibrate::model_kind(model) == calibrate::ModelKind::kFem)
+      throw InvalidArgument("compare: the model is the FEM model itself");
     const auto [load, fem] = loaded_reference(model.mesh, {model.material}, options);
     c.load = load;
     model::Problem problem = model::make_problem(built.model);
@@ -187,7 +188,7 @@ Comparison compare_surface(const mesh::Mesh& surface, const material::Material& 
                            const calibrate::SurfaceOptions& surface_options, const CompareOptions& options,
                            int layers) {
   calibrate::ModelOptions mo;
-  mo.method = "surface";
+  mo.method = calibrate::model_kind_name(calibrate::ModelKind::kSurface);
   mo.density = surface_options.density;
   mo.surface = surface_options;
   return compare_calibrated(calibrate::calibrate_model(surface, material, mo), options, layers);

@@ -1,5 +1,6 @@
 #include <cmath>
 #include <hooke/core/error.hpp>
+#include <hooke/core/name_table.hpp>
 #include <hooke/experiments/load_case.hpp>
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/mesh/measure.hpp>
@@ -8,21 +9,13 @@
 
 namespace hooke::experiments {
 
-LoadKind load_kind_from_name(std::string_view name) {
-  if (name == "stretch") return LoadKind::kStretch;
-  if (name == "compress") return LoadKind::kCompress;
-  if (name == "shear") return LoadKind::kShear;
-  throw InvalidArgument("unknown load case '" + std::string(name) + "' (use stretch, compress or shear)");
-}
+namespace {
+constexpr NameTable<LoadKind, 3> kLoadKinds{
+    "load case", {{{LoadKind::kStretch, "stretch"}, {LoadKind::kCompress, "compress"}, {LoadKind::kShear, "shear"}}}};
+}  // namespace
 
-std::string_view load_kind_name(LoadKind kind) {
-  switch (kind) {
-    case LoadKind::kStretch: return "stretch";
-    case LoadKind::kCompress: return "compress";
-    case LoadKind::kShear: return "shear";
-  }
-  return "unknown";
-}
+LoadKind load_kind_from_name(std::string_view name) { return kLoadKinds.from_name(name); }
+std::string_view load_kind_name(LoadKind kind) { return kLoadKinds.name(kind); }
 
 LoadCase make_load_case(const mesh::Mesh& mesh, LoadKind kind, double traction_pa, double thickness) {
   if (!std::isfinite(traction_pa)) throw InvalidArgument("the traction must be a finite number of pascals");

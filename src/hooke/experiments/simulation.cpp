@@ -14,11 +14,8 @@ namespace hooke::experiments {
 namespace {
 
 void check_options(const SimulationOptions& o, int dim, int nodes) {
-  if (!(o.dt > 0.0) || !std::isfinite(o.dt)) throw InvalidArgument("the time step dt must be > 0 s");
+  solve::validate(o.dynamics);
   if (o.steps < 1) throw InvalidArgument("the number of steps must be at least 1");
-  if (!(o.damping_mass >= 0.0) || !(o.damping_stiffness >= 0.0) || !std::isfinite(o.damping_mass) ||
-      !std::isfinite(o.damping_stiffness))
-    throw InvalidArgument("the Rayleigh damping coefficients must be finite and >= 0");
   if (o.probe_node < 0) return;
   const bool drive = o.probe_offset.size() > 0, push = o.probe_force.size() > 0;
   const VecX& v = drive ? o.probe_offset : o.probe_force;
@@ -33,8 +30,8 @@ void check_options(const SimulationOptions& o, int dim, int nodes) {
 
 [[noreturn]] void fail_step(const char* what, int k, const SimulationOptions& o, double limit) {
   throw SolverFailure("step " + std::to_string(k) + " " + what + " (" +
-                      std::string(solve::integrator_name(o.simulator.integrator)) + ", dt " + std::to_string(o.dt) +
-                      " s; explicit stability limit " + std::to_string(limit) +
+                      std::string(solve::integrator_name(o.simulator.integrator)) + ", dt " +
+                      std::to_string(o.dynamics.dt) + " s; explicit stability limit " + std::to_string(limit) +
                       " s): use a smaller dt or an implicit integrator");
 }
 
@@ -64,12 +61,7 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
   model::Problem problem = model::make_problem(built.model);
   if (o.clamp_bottom && !cm.surface)
     model::fix_nodes(problem, make_load_case(cm.mesh, LoadKind::kStretch, 0.0, cm.material.thickness).fixed_nodes);
-  solve::Dynamics dyn{cm.masses, VecX(), o.damping_mass, o.damping_stiffness};
-  if (o.gravity) {
-    dyn.gravity = VecX::Zero(d);
-    dyn.gravity(d - 1) = -9.81;  // along -y in 2D, -z in 3D: the meshes' vertical axis
-  }
-  solve::Simulator sim(problem, dyn, o.simulator);
+  solve::Simulator sim(problem, solve::make_dynamics(o.dynamics, cm.masses, d), o.simulator);
   solve::Probe probe;
   if (o.probe_node >= 0) {
     probe.nodes = {old_to_new[static_cast<size_t>(o.probe_node)]};
@@ -77,7 +69,7 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
     probe.offset = probe.force = VecX::Zero(d);
     sim.set_probe(probe);
     if (built.volume_penalty) {  // the weights of Eq. 4 follow the probe (Arnab & Raja, Fig. 11)
-      const double radius = o.influence_radius > 0.0 ? o.influence_radius : 0.5 * mesh::bounding_box_diagonal(cm.mesh);
+      const double radius = solve::influence_radius(o.dynamics, mesh::bounding_box_diagonal(cm.mesh));
       const VecX& v = probe.drive_position ? o.probe_offset : o.probe_force;
       if (v.norm() > 0.0) {
         sim.problem().interaction = model::Interaction{cm.mesh.nodes.row(probe.nodes[0]).transpose(), Vec3(v), radius};
@@ -108,7 +100,7 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
       sim.set_probe(probe);
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const solve::StepReport r = sim.step(o.dt);
+    const solve::StepReport r = sim.step(o.dynamics.dt);
     s.step_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     if (!sim.positions().allFinite() || !sim.velocities().allFinite())
       fail_step("produced non-finite positions", k, o, s.stable_time_step);

@@ -4,6 +4,7 @@
 /// handed to a sink, and a timing and energy summary.
 #include <functional>
 #include <hooke/calibrate/calibrated_model.hpp>
+#include <hooke/solve/dynamics_setup.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <vector>
 
@@ -11,18 +12,14 @@ namespace hooke::experiments {
 
 struct SimulationOptions {
   solve::SimulatorOptions simulator;  ///< integrator and its settings
-  double dt = 1e-3;                   ///< time step, s (> 0)
+  solve::DynamicsSetup dynamics;      ///< dt, gravity, Rayleigh damping, Eq. 4's radius
   int steps = 100;                    ///< number of steps (>= 1)
   int every = 0;                      ///< a frame every this many steps; 0: about 100 frames
-  bool gravity = false;               ///< 9.81 m/s^2 down the vertical axis (y in 2D, z in 3D)
-  double damping_mass = 0.0;          ///< Rayleigh alpha, 1/s (>= 0)
-  double damping_stiffness = 0.0;     ///< Rayleigh beta, s (>= 0)
   bool clamp_bottom = true;           ///< clamp the nodes of the lowest face (not for a surface model)
   bool reorder = true;                ///< simulate in reverse Cuthill-McKee order (same trajectory, faster)
   int probe_node = -1;                ///< node grabbed by the probe, in the model's numbering (-1: none)
   VecX probe_offset;                  ///< drive the probe node by this offset, m (dim), ramped linearly
   VecX probe_force;                   ///< or push it with this force, N (dim), ramped linearly
-  double influence_radius = 0.0;      ///< surface model: r of Eq. 4, m (0: half the bounding-box diagonal)
   /// Keep going when a step ends above the Newton tolerance (counted in SimulationSummary::not_converged) instead
   /// of failing with SolverFailure at that step.
   bool allow_unconverged = false;

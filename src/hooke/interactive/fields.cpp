@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <hooke/core/error.hpp>
+#include <hooke/core/name_table.hpp>
 #include <hooke/interactive/fields.hpp>
 #include <hooke/mesh/topology.hpp>
 #include <set>
@@ -39,23 +40,17 @@ SurfaceView surface_view(const mesh::Mesh& mesh) {
   return v;
 }
 
-ColorField color_field_from_name(const std::string& name) {
-  for (const ColorField f :
-       {ColorField::kNone, ColorField::kDisplacement, ColorField::kError, ColorField::kStrain, ColorField::kWeights})
-    if (color_field_name(f) == name) return f;
-  throw InvalidArgument("unknown colour map '" + name + "' (none, displacement, error, strain, weights)");
-}
+namespace {
+constexpr NameTable<ColorField, 5> kColorFields{"colour map",
+                                                {{{ColorField::kNone, "none"},
+                                                  {ColorField::kDisplacement, "displacement"},
+                                                  {ColorField::kError, "error"},
+                                                  {ColorField::kStrain, "strain"},
+                                                  {ColorField::kWeights, "weights"}}}};
+}  // namespace
 
-std::string color_field_name(ColorField f) {
-  switch (f) {
-    case ColorField::kNone: return "none";
-    case ColorField::kDisplacement: return "displacement";
-    case ColorField::kError: return "error";
-    case ColorField::kStrain: return "strain";
-    case ColorField::kWeights: return "weights";
-  }
-  return "none";
-}
+ColorField color_field_from_name(const std::string& name) { return kColorFields.from_name(name); }
+std::string color_field_name(ColorField f) { return std::string(kColorFields.name(f)); }
 
 std::string color_field_unit(ColorField f) {
   switch (f) {

@@ -4,7 +4,7 @@
 /// from the device's position between two deformation steps: f(u) = force - stiffness (u - offset).
 #include <hooke/core/error.hpp>
 #include <hooke/core/types.hpp>
-#include <string>
+#include <string_view>
 
 namespace hooke::interactive {
 
@@ -21,12 +21,9 @@ enum class HapticStiffness {
 };
 
 /// "none", "condensed", "secant". @throws InvalidArgument otherwise
-inline HapticStiffness haptic_stiffness_from_name(const std::string& name) {
-  if (name == "none") return HapticStiffness::kNone;
-  if (name == "condensed") return HapticStiffness::kCondensed;
-  if (name == "secant") return HapticStiffness::kSecant;
-  throw InvalidArgument("unknown haptic stiffness '" + name + "' (none, condensed, secant)");
-}
+HapticStiffness haptic_stiffness_from_name(std::string_view name);
+/// Stable name of `stiffness`.
+std::string_view haptic_stiffness_name(HapticStiffness stiffness);
 
 struct HapticModel {
   long version = 0;      ///< increases with every deformation step (0: no model yet)

@@ -18,10 +18,10 @@ LiveSimulation make_simulation(const mesh::Mesh& m, const HapticsBenchmarkOption
   LiveSettings s;
   s.method = o.method;
   s.material = {material::Law::kLinear, 14630.0, o.poisson};
-  s.damping_mass = o.damping_mass;
+  s.dynamics.damping_mass = o.damping_mass;
   s.haptic_stiffness = o.stiffness;
   s.simulator = o.simulator;
-  s.dt = dt;
+  s.dynamics.dt = dt;
   LiveSimulation sim(m, s);
   sim.grab(experiments::benchmark_probe_nodes(m));
   return sim;

@@ -12,13 +12,8 @@ namespace hooke::interactive {
 namespace {
 
 void check_settings(const LiveSettings& s) {
-  if (!(s.dt > 0.0) || !std::isfinite(s.dt)) throw InvalidArgument("the time step dt must be a finite number > 0 s");
+  solve::validate(s.dynamics);
   if (!(s.density > 0.0) || !std::isfinite(s.density)) throw InvalidArgument("the density must be > 0 kg/m^3");
-  if (!(s.damping_mass >= 0.0) || !(s.damping_stiffness >= 0.0) || !std::isfinite(s.damping_mass) ||
-      !std::isfinite(s.damping_stiffness))
-    throw InvalidArgument("the Rayleigh damping coefficients must be finite and >= 0");
-  if (!(s.influence_radius >= 0.0) || !std::isfinite(s.influence_radius))
-    throw InvalidArgument("the radius of influence must be finite and >= 0 m");
 }
 
 bool same_material(const material::Material& a, const material::Material& b) {
@@ -108,12 +103,8 @@ struct LiveSimulation::Impl {
                     .fixed_nodes;
       model::fix_nodes(problem, clamped);
     }
-    solve::Dynamics dyn{model.masses, VecX(), settings.damping_mass, settings.damping_stiffness};
-    if (settings.gravity) {
-      dyn.gravity = VecX::Zero(d);
-      dyn.gravity(d - 1) = -9.81;
-    }
-    solve::Simulator s(std::move(problem), std::move(dyn), settings.simulator);  // checks the integrator's options
+    solve::Simulator s(std::move(problem), solve::make_dynamics(settings.dynamics, model.masses, d),
+                       settings.simulator);  // checks the integrator's options
     s.set_state(x, v);
     sim.emplace(std::move(s));
     if (!probe.nodes.empty()) {
@@ -134,8 +125,7 @@ struct LiveSimulation::Impl {
       const int d = dim();
       const VecX total = grab_positions.segment(0, d) + offset - model.mesh.nodes.row(probe.nodes[0]).transpose();
       if (total.norm() > 0.0) {
-        const double radius =
-            settings.influence_radius > 0.0 ? settings.influence_radius : 0.5 * mesh::bounding_box_diagonal(model.mesh);
+        const double radius = solve::influence_radius(settings.dynamics, mesh::bounding_box_diagonal(model.mesh));
         interaction = model::Interaction{model.mesh.nodes.row(probe.nodes[0]).transpose(), Vec3(total), radius};
       }
     }
@@ -168,8 +158,9 @@ LiveSimulation::LiveSimulation(calibrate::CalibratedModel model, const LiveSetti
   // "file", or the model's own method (or "auto" for a model "auto" chose) with its own material and density, runs
   // the model as it is.
   const bool same_method = settings.method == model.method || (settings.method == "auto" && !model.choice.empty());
-  const bool as_is = settings.method == "file" || (same_method && same_material(settings.material, model.material) &&
-                                                   settings.density == model.density);
+  const bool own = calibrate::model_kind_of_method(settings.method) == calibrate::ModelKind::kFile;
+  const bool as_is =
+      own || (same_method && same_material(settings.material, model.material) && settings.density == model.density);
   if (!as_is) model = calibrate_for(model.mesh, settings);
   m->settings = settings;
   m->built = calibrate::build_model(model);
@@ -184,19 +175,22 @@ LiveSimulation& LiveSimulation::operator=(LiveSimulation&&) noexcept = default;
 std::string live_method_for(const calibrate::CalibratedModel& model) {
   if (!model.choice.empty()) return "auto";
   const std::vector<std::string> names = calibrate::model_method_names();
-  return std::find(names.begin(), names.end(), model.method) != names.end() ? model.method : "file";
+  return std::find(names.begin(), names.end(), model.method) != names.end()
+             ? model.method
+             : std::string(calibrate::model_kind_name(calibrate::ModelKind::kFile));
 }
 
 void LiveSimulation::apply(const LiveSettings& s) {
   check_settings(s);
   const LiveSettings& old = m->settings;
   // "file" keeps the model's own constants: a new material would show in the settings but not in the body.
-  if (s.method == "file" && (!same_material(s.material, m->model.material) || s.density != m->model.density ||
-                             !same_surface(s.surface, old.surface)))
+  const bool own = calibrate::model_kind_of_method(s.method) == calibrate::ModelKind::kFile;
+  if (own && (!same_material(s.material, m->model.material) || s.density != m->model.density ||
+              !same_surface(s.surface, old.surface)))
     throw InvalidArgument("this model's constants are its own (method '" + m->model.method +
                           "', not one hooke calibrates): a new E, nu, density or surface option needs a method");
-  const bool recalibrate = s.method != "file" && (s.method != old.method || !same_material(s.material, old.material) ||
-                                                  s.density != old.density || !same_surface(s.surface, old.surface));
+  const bool recalibrate = !own && (s.method != old.method || !same_material(s.material, old.material) ||
+                                    s.density != old.density || !same_surface(s.surface, old.surface));
   // Build everything new first (strong guarantee), then swap.
   std::optional<calibrate::CalibratedModel> model;
   calibrate::BuiltModel built = m->built;
@@ -221,7 +215,7 @@ void LiveSimulation::apply(const LiveSettings& s) {
 const LiveSettings& LiveSimulation::settings() const { return m->settings; }
 
 solve::StepReport LiveSimulation::step() {
-  solve::StepReport r = m->sim->step(m->settings.dt);
+  solve::StepReport r = m->sim->step(m->settings.dynamics.dt);
   if (!m->sim->positions().allFinite() || !m->sim->velocities().allFinite())
     throw SolverFailure("the step at t = " + std::to_string(m->sim->time()) +
                         " s produced non-finite positions: use a smaller dt or an implicit integrator");
@@ -362,7 +356,7 @@ ProbeEquilibrium fem_probe_equilibrium(const calibrate::CalibratedModel& cm, mat
   material::Material mat = cm.material;
   mat.law = law;
   calibrate::ModelOptions o;
-  o.method = "fem";
+  o.method = calibrate::model_kind_name(calibrate::ModelKind::kFem);
   o.density = cm.density;
   const calibrate::CalibratedModel fem = calibrate::calibrate_model(cm.mesh, mat, o);
   return probe_equilibrium(fem, clamped, grabbed, targets, gravity);

@@ -9,6 +9,7 @@
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/interactive/haptic_model.hpp>
 #include <hooke/solve/contact_stiffness.hpp>
+#include <hooke/solve/dynamics_setup.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <memory>
 #include <optional>
@@ -26,11 +27,7 @@ struct LiveSettings {
   calibrate::SurfaceOptions surface;  ///< "surface" only: scheme, anchor law, volume penalty
   /// the integrator and its options (solve::SimulatorOptions' defaults: quasi-newton, which runs every model)
   solve::SimulatorOptions simulator;
-  double dt = 1e-3;                ///< time step, s (> 0): 1 kHz by default, a haptic loop's rate
-  bool gravity = false;            ///< 9.81 m/s^2 down the vertical axis (y in 2D, z in 3D)
-  double damping_mass = 0.0;       ///< Rayleigh alpha, 1/s (>= 0)
-  double damping_stiffness = 0.0;  ///< Rayleigh beta, s (>= 0)
-  double influence_radius = 0.0;   ///< surface model: r of Eq. 4, m (0: half the bounding-box diagonal)
+  solve::DynamicsSetup dynamics;  ///< dt (1 kHz by default, a haptic loop's rate), gravity, damping, Eq. 4's radius
   /// the haptic local model's stiffness (HapticModel::stiffness)
   HapticStiffness haptic_stiffness = HapticStiffness::kSecant;
   /// its condensation region (HapticStiffness::kCondensed; solve::ContactStiffnessOptions)

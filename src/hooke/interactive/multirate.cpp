@@ -11,7 +11,7 @@ VecX DeviceDrag::at(double t) const {
 }
 
 ForceTrace full_rate_force(LiveSimulation& sim, const DeviceDrag& device, double duration) {
-  const double dt = sim.settings().dt;
+  const double dt = sim.settings().dynamics.dt;
   const auto steps = static_cast<Eigen::Index>(std::llround(duration / dt));
   ForceTrace out;
   out.force.resize(steps, sim.model().mesh.dim());
@@ -25,7 +25,7 @@ ForceTrace full_rate_force(LiveSimulation& sim, const DeviceDrag& device, double
 }
 
 ForceTrace multirate_force(LiveSimulation& sim, const DeviceDrag& device, double duration, double haptic_dt) {
-  const double dt = sim.settings().dt;
+  const double dt = sim.settings().dynamics.dt;
   const auto ratio = std::llround(dt / haptic_dt);
   if (!(haptic_dt > 0.0) || ratio < 1 || std::abs(static_cast<double>(ratio) * haptic_dt - dt) > 1e-9 * dt)
     throw InvalidArgument("multirate: the deformation step " + std::to_string(dt) +

@@ -7,20 +7,13 @@
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/simulation.hpp>
 #include <hooke/interactive/physics_loop.hpp>
+#include <hooke/solve/dynamics_setup.hpp>
 #include <nlohmann/json.hpp>
 
 namespace hooke::interactive {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double parse_number(const std::string& key, const std::string& value) {
-  double v = 0.0;
-  const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
-  if (ec != std::errc() || end != value.data() + value.size() || !std::isfinite(v))
-    throw InvalidArgument("set " + key + ": '" + value + "' is not a finite number");
-  return v;
-}
 
 // Wall times of the last steps (a ring of 1 000) and when they ended, for the rate and the percentiles.
 struct StepClock {
@@ -66,34 +59,25 @@ struct OwnerMark {
 
 void apply_setting(LiveSettings& s, const std::string& key, const std::string& value) {
   if (key == "young") {
-    s.material.youngs_modulus = parse_number(key, value);
+    s.material.youngs_modulus = solve::setting_number(key, value);
   } else if (key == "poisson") {
-    s.material.poisson_ratio = parse_number(key, value);
+    s.material.poisson_ratio = solve::setting_number(key, value);
   } else if (key == "density") {
-    s.density = parse_number(key, value);
+    s.density = solve::setting_number(key, value);
   } else if (key == "method") {
     s.method = value;
   } else if (key == "integrator") {
     s.simulator.integrator = solve::integrator_from_name(value);
-  } else if (key == "dt") {
-    s.dt = parse_number(key, value);
-  } else if (key == "damping-mass") {
-    s.damping_mass = parse_number(key, value);
-  } else if (key == "damping-stiffness") {
-    s.damping_stiffness = parse_number(key, value);
   } else if (key == "haptic-stiffness") {
     s.haptic_stiffness = haptic_stiffness_from_name(value);
-  } else if (key == "gravity") {
-    if (value != "on" && value != "off") throw InvalidArgument("set gravity takes on or off, not '" + value + "'");
-    s.gravity = value == "on";
-  } else {
+  } else if (!solve::set_dynamics_field(s.dynamics, key, value)) {
     throw InvalidArgument("unknown setting '" + key + "'");
   }
 }
 
 PhysicsLoop::PhysicsLoop(LiveSimulation simulation, bool realtime, int threads)
     : m_sim(std::move(simulation)), m_realtime(realtime), m_threads(std::max(threads, 1)) {
-  m_work_stats.target_rate = 1.0 / m_sim.settings().dt;
+  m_work_stats.target_rate = 1.0 / m_sim.settings().dynamics.dt;
   stage();
   publish();
 }
@@ -236,7 +220,7 @@ void PhysicsLoop::run_commands(std::deque<std::function<void(LiveSimulation&)>>&
     commands.pop_front();
     try {
       command(m_sim);
-      m_work_stats.target_rate = 1.0 / m_sim.settings().dt;
+      m_work_stats.target_rate = 1.0 / m_sim.settings().dynamics.dt;
     } catch (const std::exception& e) {
       m_work_stats.error = e.what();
     }
@@ -247,7 +231,8 @@ void PhysicsLoop::run_commands(std::deque<std::function<void(LiveSimulation&)>>&
 // the state of its time and handed to the front end; true when the physics must then wait for drawing_done().
 bool PhysicsLoop::run_script_commands() {
   const int d = m_sim.model().mesh.dim();
-  while (m_script_next < m_script.size() && m_script[m_script_next].time <= m_sim.time() + 1e-9 * m_sim.settings().dt) {
+  while (m_script_next < m_script.size() &&
+         m_script[m_script_next].time <= m_sim.time() + 1e-9 * m_sim.settings().dynamics.dt) {
     const ScriptCommand& c = m_script[m_script_next];
     try {
       switch (c.action) {
@@ -277,7 +262,7 @@ bool PhysicsLoop::run_script_commands() {
           LiveSettings s = m_sim.settings();
           apply_setting(s, c.key, c.value);
           m_sim.apply(s);
-          m_work_stats.target_rate = 1.0 / s.dt;
+          m_work_stats.target_rate = 1.0 / s.dynamics.dt;
           break;
         }
         case ScriptAction::kReset:
@@ -382,7 +367,7 @@ void PhysicsLoop::run_steps() {
     }
     const Clock::time_point t1 = Clock::now();
     const double step_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
-    const double period = m_sim.settings().dt;
+    const double period = m_sim.settings().dynamics.dt;
     clock.add(step_ms, t0, t1);
     ++st.steps;
     if (step_ms > 1e3 * period) ++st.overruns;
@@ -420,7 +405,7 @@ void PhysicsLoop::run_steps() {
         step_once();
         stage();
       }
-      period = m_sim.settings().dt;
+      period = m_sim.settings().dynamics.dt;
     }
     if (outcome == Outcome::kDrawing) {
       wait([this](std::unique_lock<std::mutex>& lock) {

@@ -149,8 +149,8 @@ class PhysicsLoop {
   double m_drag_t0 = 0.0, m_drag_t1 = -1.0;
 };
 
-/// Carries out one `set` script command on settings (young, poisson, density, method, integrator, dt, damping-mass,
-/// damping-stiffness, haptic-stiffness, gravity).
+/// Carries out one `set` script command on settings (young, poisson, density, method, integrator, haptic-stiffness,
+/// and the dynamics fields: dt, gravity, damping-mass, damping-stiffness, influence-radius; solve::dynamics_fields).
 /// @throws InvalidArgument for a value that does not parse or is out of range
 void apply_setting(LiveSettings& settings, const std::string& key, const std::string& value);
 

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <hooke/core/error.hpp>
 #include <hooke/interactive/script.hpp>
+#include <hooke/solve/dynamics_setup.hpp>
 #include <sstream>
 
 namespace hooke::interactive {
@@ -41,8 +42,8 @@ struct LineParser {
   }
 };
 
-const char* const kSetKeys[] = {"young", "poisson",      "density",           "method", "integrator",
-                                "dt",    "damping-mass", "damping-stiffness", "gravity"};
+// Besides solve::dynamics_fields() (dt, gravity, damping-mass, damping-stiffness, influence-radius).
+const char* const kSetKeys[] = {"young", "poisson", "density", "method", "integrator"};
 
 }  // namespace
 
@@ -98,6 +99,7 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
       c.key = p.word("setting");
       bool known = false;
       for (const char* k : kSetKeys) known = known || c.key == k;
+      for (const solve::DynamicsField& f : solve::dynamics_fields()) known = known || c.key == f.name;
       if (!known) p.fail("unknown setting '" + c.key + "'");
       c.value = p.word("value");
     } else if (verb == "colormap") {

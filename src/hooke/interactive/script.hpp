@@ -8,7 +8,7 @@
 ///     0.01 drag 0 0 0.003 over 0.5 drive the grabbed nodes to grab position + (dx, dy, dz) m, ramped over 0.5 s
 ///     0.60 release
 ///     0.70 set poisson 0.45        set young|poisson|density|method|integrator|dt|damping-mass|damping-stiffness|
-///                                  gravity (on|off)
+///                                  influence-radius|gravity (on|off)
 ///     0.70 reset | pause | resume
 ///     0.80 colormap error          none|displacement|error|strain|weights (drawing)
 ///     0.80 ghost linear            off|linear|stvk: the FEM ghost (drawing)

@@ -1,3 +1,4 @@
+#include <hooke/core/name_table.hpp>
 #include <hooke/material/material.hpp>
 
 #include <cmath>
@@ -38,28 +39,15 @@ Lame lame(const Material& m, int dim) {
   return l;
 }
 
-Law law_from_name(std::string_view name) {
-  if (name == "linear") return Law::kLinear;
-  if (name == "stvk") return Law::kStVK;
-  if (name == "neohookean") return Law::kNeoHookean;
-  throw InvalidArgument("unknown material law '" + std::string(name) + "' (use linear, stvk or neohookean)");
-}
+namespace {
+constexpr NameTable<Law, 3> kLaws{"material law",
+                                  {{{Law::kLinear, "linear"}, {Law::kStVK, "stvk"}, {Law::kNeoHookean, "neohookean"}}}};
+constexpr NameTable<Plane, 2> kPlanes{"plane", {{{Plane::kStress, "stress"}, {Plane::kStrain, "strain"}}}};
+}  // namespace
 
-Plane plane_from_name(std::string_view name) {
-  if (name == "stress") return Plane::kStress;
-  if (name == "strain") return Plane::kStrain;
-  throw InvalidArgument("unknown plane '" + std::string(name) + "' (use stress or strain)");
-}
-
-std::string_view plane_name(Plane plane) { return plane == Plane::kStress ? "stress" : "strain"; }
-
-std::string_view law_name(Law law) {
-  switch (law) {
-    case Law::kLinear: return "linear";
-    case Law::kStVK: return "stvk";
-    case Law::kNeoHookean: return "neohookean";
-  }
-  return "unknown";
-}
+Law law_from_name(std::string_view name) { return kLaws.from_name(name); }
+std::string_view law_name(Law law) { return kLaws.name(law); }
+Plane plane_from_name(std::string_view name) { return kPlanes.from_name(name); }
+std::string_view plane_name(Plane plane) { return kPlanes.name(plane); }
 
 }  // namespace hooke::material

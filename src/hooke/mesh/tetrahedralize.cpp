@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
+#include <hooke/core/name_table.hpp>
 #include <hooke/mesh/closed_surface.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <hooke/mesh/self_intersection.hpp>
@@ -167,15 +168,11 @@ Mesh netgen_volume(const Mesh& surface, const TetrahedralizeOptions& o) {
 
 }  // namespace
 
-SurfaceMeshing surface_meshing_from_name(std::string_view name) {
-  if (name == "remesh") return SurfaceMeshing::kRemesh;
-  if (name == "keep") return SurfaceMeshing::kKeep;
-  throw InvalidArgument("unknown surface meshing '" + std::string(name) + "' (valid: remesh, keep)");
-}
+constexpr NameTable<SurfaceMeshing, 2> kSurfaceMeshings{
+    "surface meshing", {{{SurfaceMeshing::kRemesh, "remesh"}, {SurfaceMeshing::kKeep, "keep"}}}};
 
-std::string_view surface_meshing_name(SurfaceMeshing meshing) {
-  return meshing == SurfaceMeshing::kKeep ? "keep" : "remesh";
-}
+SurfaceMeshing surface_meshing_from_name(std::string_view name) { return kSurfaceMeshings.from_name(name); }
+std::string_view surface_meshing_name(SurfaceMeshing meshing) { return kSurfaceMeshings.name(meshing); }
 
 double edge_of_regular_tet(double volume) {
   if (!(volume > 0.0) || !std::isfinite(volume))

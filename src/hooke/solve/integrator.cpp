@@ -1,4 +1,5 @@
 #include <hooke/core/error.hpp>
+#include <hooke/core/name_table.hpp>
 #include <hooke/solve/detail/integrator_step.hpp>
 #include <hooke/solve/integrator.hpp>
 #include <string>
@@ -6,35 +7,29 @@
 namespace hooke::solve {
 namespace {
 
-constexpr std::string_view kNames[] = {"symplectic-euler", "velocity-verlet", "implicit-euler",
-                                       "local-global",     "quasi-static",    "implicit-euler-linearised",
-                                       "quasi-newton"};
+constexpr NameTable<Integrator, 7> kIntegrators{"integrator",
+                                                {{{Integrator::kSymplecticEuler, "symplectic-euler"},
+                                                  {Integrator::kVelocityVerlet, "velocity-verlet"},
+                                                  {Integrator::kImplicitEuler, "implicit-euler"},
+                                                  {Integrator::kImplicitEulerLinearised, "implicit-euler-linearised"},
+                                                  {Integrator::kLocalGlobal, "local-global"},
+                                                  {Integrator::kQuasiNewton, "quasi-newton"},
+                                                  {Integrator::kQuasiStatic, "quasi-static"}}}};
+constexpr NameTable<GlobalSolve, 2> kGlobalSolves{
+    "global solve", {{{GlobalSolve::kDirect, "direct"}, {GlobalSolve::kChebyshev, "chebyshev"}}}};
+constexpr NameTable<QuasiNewtonHessian, 3> kHessians{"quasi-newton initial Hessian",
+                                                     {{{QuasiNewtonHessian::kAuto, "auto"},
+                                                       {QuasiNewtonHessian::kRest, "rest"},
+                                                       {QuasiNewtonHessian::kIsotropic, "isotropic"}}}};
 
 }  // namespace
 
-Integrator integrator_from_name(std::string_view name) {
-  for (size_t i = 0; i < std::size(kNames); ++i)
-    if (kNames[i] == name) return static_cast<Integrator>(i);
-  throw InvalidArgument("unknown integrator '" + std::string(name) +
-                        "' (use symplectic-euler, velocity-verlet, implicit-euler, implicit-euler-linearised, "
-                        "local-global, quasi-newton, quasi-static)");
-}
-
-std::string_view integrator_name(Integrator integrator) { return kNames[static_cast<size_t>(integrator)]; }
-
-GlobalSolve global_solve_from_name(std::string_view name) {
-  if (name == "direct") return GlobalSolve::kDirect;
-  if (name == "chebyshev") return GlobalSolve::kChebyshev;
-  throw InvalidArgument("unknown global solve '" + std::string(name) + "' (use direct or chebyshev)");
-}
-
-QuasiNewtonHessian quasi_newton_hessian_from_name(std::string_view name) {
-  if (name == "rest") return QuasiNewtonHessian::kRest;
-  if (name == "isotropic") return QuasiNewtonHessian::kIsotropic;
-  if (name == "auto") return QuasiNewtonHessian::kAuto;
-  throw InvalidArgument("unknown quasi-newton initial Hessian '" + std::string(name) +
-                        "' (use auto, rest or isotropic)");
-}
+Integrator integrator_from_name(std::string_view name) { return kIntegrators.from_name(name); }
+std::string_view integrator_name(Integrator integrator) { return kIntegrators.name(integrator); }
+GlobalSolve global_solve_from_name(std::string_view name) { return kGlobalSolves.from_name(name); }
+std::string_view global_solve_name(GlobalSolve solve) { return kGlobalSolves.name(solve); }
+QuasiNewtonHessian quasi_newton_hessian_from_name(std::string_view name) { return kHessians.from_name(name); }
+std::string_view quasi_newton_hessian_name(QuasiNewtonHessian hessian) { return kHessians.name(hessian); }
 
 namespace detail {
 

@@ -50,6 +50,7 @@ enum class GlobalSolve {
 };
 
 GlobalSolve global_solve_from_name(std::string_view name);  ///< @throws InvalidArgument
+std::string_view global_solve_name(GlobalSolve solve);      ///< "direct" or "chebyshev"
 
 /// The initial Hessian of the quasi-newton integrator's L-BFGS.
 enum class QuasiNewtonHessian {
@@ -64,5 +65,6 @@ enum class QuasiNewtonHessian {
 };
 
 QuasiNewtonHessian quasi_newton_hessian_from_name(std::string_view name);  ///< @throws InvalidArgument
+std::string_view quasi_newton_hessian_name(QuasiNewtonHessian hessian);    ///< "auto", "rest" or "isotropic"
 
 }  // namespace hooke::solve

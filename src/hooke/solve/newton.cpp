@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <hooke/core/error.hpp>
+#include <hooke/core/name_table.hpp>
 #include <hooke/solve/detail/sparse_ops.hpp>
 #include <hooke/solve/newton.hpp>
 #include <limits>
@@ -13,17 +14,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+constexpr NameTable<NewtonLinearSolver, 2> kLinearSolvers{
+    "linear solver", {{{NewtonLinearSolver::kCholesky, "cholesky"}, {NewtonLinearSolver::kConjugateGradient, "cg"}}}};
+
 }  // namespace
 
-NewtonLinearSolver newton_linear_solver_from_name(std::string_view name) {
-  if (name == "cholesky") return NewtonLinearSolver::kCholesky;
-  if (name == "cg") return NewtonLinearSolver::kConjugateGradient;
-  throw InvalidArgument("unknown linear solver '" + std::string(name) + "' (use cholesky or cg)");
-}
-
-std::string_view newton_linear_solver_name(NewtonLinearSolver solver) {
-  return solver == NewtonLinearSolver::kCholesky ? "cholesky" : "cg";
-}
+NewtonLinearSolver newton_linear_solver_from_name(std::string_view name) { return kLinearSolvers.from_name(name); }
+std::string_view newton_linear_solver_name(NewtonLinearSolver solver) { return kLinearSolvers.name(solver); }
 
 struct NewtonSolver::Impl {
   NewtonOptions opt;
