@@ -19,28 +19,12 @@ namespace {
 
 struct IdentifyCli {
   ModelInput in;
-  std::string law = "linear", params = "auto", objective = "positions", compare = "auto", output, report,
-              write_reference;
+  std::string law = "linear", compare = "auto", output, report, write_reference;
   std::vector<std::string> reference{"fem"}, held_out_reference;
   experiments::ReferenceLoads loads;
-  double regularization = 0.0, stiffness_floor = 1e-3, density = 1000.0, tolerance = 1e-9;
-  int iterations = 30;
-  bool negative_volume = false;
+  experiments::NamedIdentifyOptions named;
+  double density = 1000.0;
 };
-
-identify::IdentifyOptions identify_options(const IdentifyCli& o, const mesh::Mesh& mesh) {
-  identify::IdentifyOptions options;
-  options.parameters =
-      o.params == "auto" ? experiments::default_parameters(mesh) : identify::parameters_from_name(o.params);
-  options.objective = identify::objective_from_name(o.objective);
-  options.regularization = o.regularization;
-  options.stiffness_floor = o.stiffness_floor;
-  options.position_iterations = o.iterations;
-  options.least_squares.tolerance = o.tolerance;
-  options.negative_volume = o.negative_volume;
-  identify::validate_options(options);
-  return options;
-}
 
 std::vector<identify::ReferenceCase> reference_cases(const IdentifyCli& o, const mesh::Mesh& mesh,
                                                      const material::Material& material) {
@@ -104,7 +88,7 @@ int run_identify(const IdentifyCli& o) {
   const material::Material material{material::law_from_name(o.law), o.in.young, o.in.poisson, material::Plane::kStress,
                                     o.in.thickness};
   material::validate(material);
-  const identify::IdentifyOptions options = identify_options(o, mesh);
+  const identify::IdentifyOptions options = experiments::identify_options(o.named, mesh);
   const std::string analytic = o.compare != "auto" ? o.compare : experiments::default_analytic_method(mesh);
   std::printf(
       "hooke identify: %s, %d nodes, %d %s elements, E %.6g Pa, nu %.4g, reference %s\n", mesh.source.c_str(),
@@ -143,11 +127,11 @@ Action add_identify_command(CLI::App& app) {
       app.add_subcommand("identify", "Identify a spring model from reference deformations (Lloyd et al. Eq. 1-2)");
   add_model_input_options(cmd, o->in);
   cmd->add_option("--law", o->law, "Law of the FEM reference: linear, stvk or neohookean")->capture_default_str();
-  cmd->add_option("--params", o->params,
+  cmd->add_option("--params", o->named.parameters,
                   "springs, springs+volume, springs+volume+rest-length, or scale (one factor c on the --compare "
                   "model's k and k_V, Eq. 1 in closed form) (auto: springs+volume on tets, springs on triangles)")
       ->capture_default_str();
-  cmd->add_option("--objective", o->objective,
+  cmd->add_option("--objective", o->named.objective,
                   "positions (Eq. 1 from the Eq. 2 fit: a static solve per case and iteration; on cylinder_hole at "
                   "nu = 0.45 0.020 relative L2 held out in about 80 s of CPU) or forces (Eq. 2 alone: one sparse "
                   "least-squares solve, seconds, but it fits forces, not positions, and is 0.6-0.7 off held out there)")
@@ -161,16 +145,16 @@ Action add_identify_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--held-out", o->loads.held_out, "fem: random load cases kept out of the fit")->capture_default_str();
   cmd->add_option("--seed", o->loads.seed, "fem: seed of the random cases")->capture_default_str();
-  cmd->add_option("--regularize", o->regularization, "Weight of the penalty toward the mean stiffness (Sec. 2)")
+  cmd->add_option("--regularize", o->named.regularization, "Weight of the penalty toward the mean stiffness (Sec. 2)")
       ->capture_default_str();
-  cmd->add_flag("--negative-volume", o->negative_volume,
+  cmd->add_flag("--negative-volume", o->named.negative_volume,
                 "Let volume terms be negative (needed for nu < 1/4: a spring network alone has nu = 1/4)");
-  cmd->add_option("--tolerance", o->tolerance,
+  cmd->add_option("--tolerance", o->named.tolerance,
                   "Eq. 2: stop when the projected gradient is this fraction of U^T f (1e-2 for large meshes)")
       ->capture_default_str();
-  cmd->add_option("--stiffness-floor", o->stiffness_floor, "Smallest k as a fraction of the mean k")
+  cmd->add_option("--stiffness-floor", o->named.stiffness_floor, "Smallest k as a fraction of the mean k")
       ->capture_default_str();
-  cmd->add_option("--iterations", o->iterations, "positions: iterations at most")->capture_default_str();
+  cmd->add_option("--iterations", o->named.iterations, "positions: iterations at most")->capture_default_str();
   cmd->add_option("--compare", o->compare, "Analytic model measured beside it (auto: any-nu-tet / any-nu-triangle)")
       ->capture_default_str();
   cmd->add_option("--density", o->density, "Density for the lumped masses, kg/m^3")->capture_default_str();

@@ -13,12 +13,6 @@
 namespace hooke::viewer {
 namespace {
 
-const solve::Integrator kIntegrators[] = {
-    solve::Integrator::kQuasiNewton,    solve::Integrator::kImplicitEuler,
-    solve::Integrator::kLocalGlobal,    solve::Integrator::kSymplecticEuler,
-    solve::Integrator::kVelocityVerlet, solve::Integrator::kImplicitEulerLinearised,
-    solve::Integrator::kQuasiStatic};
-
 // A combo box over names; returns true when the choice changed.
 bool combo(const char* label, std::string& current, const std::vector<std::string>& names) {
   bool changed = false;
@@ -113,7 +107,7 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
   }
   std::string integrator(solve::integrator_name(e.simulator.integrator));
   std::vector<std::string> integrators;
-  for (const solve::Integrator i : kIntegrators) integrators.emplace_back(solve::integrator_name(i));
+  for (const std::string_view name : solve::integrator_names()) integrators.emplace_back(name);
   if (combo("integrator", integrator, integrators)) {
     e.simulator.integrator = solve::integrator_from_name(integrator);
     r.apply_settings = true;

@@ -42,16 +42,10 @@ void define_identify(py::module_& m) {
          const std::string& objective, const py::object& references, double strain, int held_out, unsigned seed,
          double regularize, double stiffness_floor, int iterations, const std::string& compare, double density,
          double tolerance, bool negative_volume) {
-        identify::IdentifyOptions options;
-        options.parameters =
-            params == "auto" ? experiments::default_parameters(mesh) : identify::parameters_from_name(params);
-        options.objective = identify::objective_from_name(objective);
-        options.regularization = regularize;
-        options.stiffness_floor = stiffness_floor;
-        options.position_iterations = iterations;
-        options.least_squares.tolerance = tolerance;
-        options.negative_volume = negative_volume;
-        identify::validate_options(options);  // before the references are built
+        const experiments::NamedIdentifyOptions named{params,     objective, regularize,     stiffness_floor,
+                                                      iterations, tolerance, negative_volume};
+        // checked before the references are built
+        const identify::IdentifyOptions options = experiments::identify_options(named, mesh);
         const std::string analytic = compare == "auto" ? experiments::default_analytic_method(mesh) : compare;
         std::vector<identify::ReferenceCase> cases;
         if (!references.is_none()) {

@@ -329,8 +329,7 @@ IdentificationStudy identification_study(const mesh::Mesh& mesh, const material:
   s.identified_errors = identify::position_errors(mesh, s.identification.springs, cases, options.statics);
   s.analytic_errors = identify::position_errors(mesh, analytic, cases, options.statics);
   std::vector<identify::ReferenceCase> training;
-  for (const auto& c : cases)
-    if (!c.held_out) training.push_back(c);
+  for (const identify::ReferenceCase* c : identify::training_cases(cases)) training.push_back(*c);
   const identify::ParameterLayout layout = identify::parameter_layout(
       mesh, analytic.volume_tets.rows() ? identify::Parameters::kSpringsVolume : identify::Parameters::kSprings);
   s.analytic_force_residual = identify::force_residual(layout, identify::parameters_of(layout, analytic), training);
@@ -348,6 +347,20 @@ IdentificationStudy identification_study(const mesh::Mesh& mesh, const material:
 
 identify::Parameters default_parameters(const mesh::Mesh& mesh) {
   return mesh.kind == mesh::ElementKind::kTet ? identify::Parameters::kSpringsVolume : identify::Parameters::kSprings;
+}
+
+identify::IdentifyOptions identify_options(const NamedIdentifyOptions& named, const mesh::Mesh& mesh) {
+  identify::IdentifyOptions options;
+  options.parameters =
+      named.parameters == "auto" ? default_parameters(mesh) : identify::parameters_from_name(named.parameters);
+  options.objective = identify::objective_from_name(named.objective);
+  options.regularization = named.regularization;
+  options.stiffness_floor = named.stiffness_floor;
+  options.position_iterations = named.iterations;
+  options.least_squares.tolerance = named.tolerance;
+  options.negative_volume = named.negative_volume;
+  identify::validate_options(options);
+  return options;
 }
 
 std::string default_analytic_method(const mesh::Mesh& mesh) {

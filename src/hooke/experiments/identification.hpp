@@ -49,6 +49,20 @@ identify::Parameters default_parameters(const mesh::Mesh& mesh);
 /// any-nu-triangle on triangles.
 std::string default_analytic_method(const mesh::Mesh& mesh);
 
+/// The identification options as `hooke identify` and hooke.identify name them, with their one set of defaults.
+struct NamedIdentifyOptions {
+  std::string parameters = "auto";      ///< identify::parameters_from_name, or "auto" (default_parameters)
+  std::string objective = "positions";  ///< identify::objective_from_name
+  double regularization = 0.0;          ///< IdentifyOptions::regularization
+  double stiffness_floor = 1e-3;        ///< IdentifyOptions::stiffness_floor, in [0, 1)
+  int iterations = 30;                  ///< IdentifyOptions::position_iterations
+  double tolerance = 1e-9;              ///< the Eq. 2 solver's relative tolerance, in (0, 1)
+  bool negative_volume = false;         ///< IdentifyOptions::negative_volume
+};
+/// The IdentifyOptions `named` stands for on `mesh`, range-checked (identify::validate_options).
+/// @throws InvalidArgument for an unknown name or a value out of range
+identify::IdentifyOptions identify_options(const NamedIdentifyOptions& named, const mesh::Mesh& mesh);
+
 /// What `hooke identify` reports.
 struct IdentificationStudy {
   identify::Identification identification;

@@ -62,11 +62,9 @@ class RegularisedOperator final : public LinearOperator {
   Eigen::Index m_extra = 0;
 };
 
-std::vector<const ReferenceCase*> training_cases(const std::vector<ReferenceCase>& cases, const ReferenceCase& rest,
-                                                 bool with_rest) {
-  std::vector<const ReferenceCase*> out;
-  for (const auto& c : cases)
-    if (!c.held_out) out.push_back(&c);
+std::vector<const ReferenceCase*> fitted_cases(const std::vector<ReferenceCase>& cases, const ReferenceCase& rest,
+                                               bool with_rest) {
+  std::vector<const ReferenceCase*> out = training_cases(cases);
   if (out.empty()) throw InvalidArgument("identification needs at least one reference case that is not held out");
   if (with_rest) out.push_back(&rest);
   return out;
@@ -137,8 +135,7 @@ double relative_force_residual(const ParameterLayout& layout, const VecX& theta,
 VecX fit_positions(const mesh::Mesh& mesh, const ParameterLayout& layout, const std::vector<ReferenceCase>& cases,
                    const VecX& start, const IdentifyOptions& options, IdentifyReport& report) {
   std::vector<ReferenceCase> training;
-  for (const auto& c : cases)
-    if (!c.held_out) training.push_back(c);
+  for (const ReferenceCase* c : training_cases(cases)) training.push_back(*c);
   PositionsObjective objective(mesh, layout, training, options.statics);
   // the start: the Eq. 2 fit or start_model, whichever has the smaller G; springs kept at or above the floor
   const int ns = layout.spring_count();
@@ -253,9 +250,7 @@ Identification identify_scale(const mesh::Mesh& mesh, const std::vector<Referenc
   r.started_from_model = true;
   r.converged = fit.converged;
   r.scale_factor = fit.factor;
-  std::vector<const ReferenceCase*> training;
-  for (const ReferenceCase& c : cases)
-    if (!c.held_out) training.push_back(&c);
+  const std::vector<const ReferenceCase*> training = training_cases(cases);
   r.force_residual = relative_force_residual(out.layout, out.theta, training);
   if (out.springs.stiffness.size()) {
     r.min_stiffness = out.springs.stiffness.minCoeff();
@@ -292,7 +287,7 @@ Identification identify(const mesh::Mesh& mesh, const std::vector<ReferenceCase>
   const ReferenceCase rest{"rest", rest_positions, VecX::Zero(rest_positions.size()),
                            std::vector<char>(rest_positions.size(), 0), false};
   const bool rest_lengths = options.parameters == Parameters::kSpringsVolumeRestLength;
-  const auto training = training_cases(cases, rest, rest_lengths);
+  const auto training = fitted_cases(cases, rest, rest_lengths);
 
   Identification out;
   out.layout = parameter_layout(mesh, options.parameters);

@@ -3,6 +3,13 @@
 
 namespace hooke::identify {
 
+std::vector<const ReferenceCase*> training_cases(const std::vector<ReferenceCase>& cases) {
+  std::vector<const ReferenceCase*> out;
+  for (const ReferenceCase& c : cases)
+    if (!c.held_out) out.push_back(&c);
+  return out;
+}
+
 void validate_reference(const ReferenceCase& reference, Eigen::Index dof_count) {
   const std::string what = "reference case '" + reference.name + "'";
   if (reference.positions.size() != dof_count || reference.external_force.size() != dof_count ||

@@ -15,6 +15,9 @@ struct ReferenceCase {
   bool held_out = false;         ///< true: not fitted, only used to measure the identified model
 };
 
+/// The cases that are fitted (not held out), in their order: pointers into `cases`.
+std::vector<const ReferenceCase*> training_cases(const std::vector<ReferenceCase>& cases);
+
 /// Checks sizes (positions, forces and fixed flags of dof_count entries each) and finiteness.
 /// @throws InvalidArgument naming the case and what is wrong
 void validate_reference(const ReferenceCase& reference, Eigen::Index dof_count);

@@ -16,14 +16,10 @@ calibrate::SpringModel scaled(calibrate::SpringModel springs, double factor) {
 ScaleFit fit_scale(const mesh::Mesh& mesh, const calibrate::SpringModel& start, const std::vector<ReferenceCase>& cases,
                    const solve::StaticOptions& statics, int max_iterations) {
   const VecX rest = mesh::flat_positions(mesh);
-  std::vector<const ReferenceCase*> training;
+  for (const ReferenceCase& c : cases) validate_reference(c, rest.size());
+  const std::vector<const ReferenceCase*> training = training_cases(cases);
   double g_ref = 0.0;
-  for (const ReferenceCase& c : cases) {
-    validate_reference(c, rest.size());
-    if (c.held_out) continue;
-    training.push_back(&c);
-    g_ref += (c.positions - rest).squaredNorm();
-  }
+  for (const ReferenceCase* c : training) g_ref += (c->positions - rest).squaredNorm();
   if (training.empty() || !(g_ref > 0.0))
     throw InvalidArgument("the scale fit needs at least one training case that moves the body");
   ScaleFit out;

@@ -8,12 +8,12 @@ namespace hooke::solve {
 namespace {
 
 constexpr NameTable<Integrator, 7> kIntegrators{"integrator",
-                                                {{{Integrator::kSymplecticEuler, "symplectic-euler"},
-                                                  {Integrator::kVelocityVerlet, "velocity-verlet"},
+                                                {{{Integrator::kQuasiNewton, "quasi-newton"},
                                                   {Integrator::kImplicitEuler, "implicit-euler"},
-                                                  {Integrator::kImplicitEulerLinearised, "implicit-euler-linearised"},
                                                   {Integrator::kLocalGlobal, "local-global"},
-                                                  {Integrator::kQuasiNewton, "quasi-newton"},
+                                                  {Integrator::kSymplecticEuler, "symplectic-euler"},
+                                                  {Integrator::kVelocityVerlet, "velocity-verlet"},
+                                                  {Integrator::kImplicitEulerLinearised, "implicit-euler-linearised"},
                                                   {Integrator::kQuasiStatic, "quasi-static"}}}};
 constexpr NameTable<GlobalSolve, 2> kGlobalSolves{
     "global solve", {{{GlobalSolve::kDirect, "direct"}, {GlobalSolve::kChebyshev, "chebyshev"}}}};
@@ -26,6 +26,11 @@ constexpr NameTable<QuasiNewtonHessian, 3> kHessians{"quasi-newton initial Hessi
 
 Integrator integrator_from_name(std::string_view name) { return kIntegrators.from_name(name); }
 std::string_view integrator_name(Integrator integrator) { return kIntegrators.name(integrator); }
+std::vector<std::string_view> integrator_names() {
+  std::vector<std::string_view> out;
+  for (const auto& [integrator, name] : kIntegrators.entries) out.push_back(name);
+  return out;
+}
 GlobalSolve global_solve_from_name(std::string_view name) { return kGlobalSolves.from_name(name); }
 std::string_view global_solve_name(GlobalSolve solve) { return kGlobalSolves.name(solve); }
 QuasiNewtonHessian quasi_newton_hessian_from_name(std::string_view name) { return kHessians.from_name(name); }

@@ -4,6 +4,7 @@
 /// factory in integrator.cpp, its own file and the library's source list.
 #include <hooke/solve/newton.hpp>
 #include <string_view>
+#include <vector>
 
 namespace hooke::solve {
 
@@ -39,6 +40,8 @@ enum class Integrator {
 
 Integrator integrator_from_name(std::string_view name);  ///< @throws InvalidArgument listing the names
 std::string_view integrator_name(Integrator integrator);
+/// Every integrator's name, the real-time default (quasi-newton) first.
+std::vector<std::string_view> integrator_names();
 
 /// How local-global solves its global linear system each iteration.
 enum class GlobalSolve {
