@@ -69,7 +69,7 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0), ImGuiCond_FirstUseEver);
   ImGui::Begin("hooke");
-  ImGui::Text("%s model, %d nodes", snap.settings.method.c_str(), node_count);
+  ImGui::Text("%s model, %d nodes", snap.settings.model.method.c_str(), node_count);
   rates(snap.stats, state.draw_rate, state.haptic);
   ImGui::Separator();
   probe(state, snap);
@@ -77,7 +77,7 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
 
   interactive::LiveSettings& e = state.edit;
   // A model whose constants hooke cannot remake ("file": a hand-tuned model file) keeps its material.
-  const bool fixed_material = calibrate::model_kind_of_method(e.method) == calibrate::ModelKind::kFile;
+  const bool fixed_material = calibrate::model_kind_of_method(e.model.method) == calibrate::ModelKind::kFile;
   if (fixed_material)
     ImGui::TextWrapped("This model's constants are its own: E and nu are fixed (choose a method to recalibrate).");
   ImGui::BeginDisabled(fixed_material);
@@ -94,14 +94,14 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
   ImGui::EndDisabled();
   std::vector<std::string> methods = calibrate::model_method_names();
   methods.insert(methods.begin(), std::string(calibrate::model_kind_name(calibrate::ModelKind::kFile)));
-  r.apply_settings |= combo("method", e.method, methods);
-  if (calibrate::model_kind_of_method(e.method) ==
+  r.apply_settings |= combo("method", e.model.method, methods);
+  if (calibrate::model_kind_of_method(e.model.method) ==
       calibrate::ModelKind::kSurface) {  // Arnab & Raja's distribution schemes (their Sec. Experimental Findings)
-    std::string scheme(calibrate::surface_scheme_name(e.surface.scheme));
+    std::string scheme(calibrate::surface_scheme_name(e.model.surface.scheme));
     if (combo("scheme", scheme, {"A", "B", "C", "D"})) {
-      e.surface.scheme = calibrate::surface_scheme_from_name(scheme);
-      e.surface.anchor_law.reset();  // the scheme's own anchor law and volume penalty
-      e.surface.volume_penalty.reset();
+      e.model.surface.scheme = calibrate::surface_scheme_from_name(scheme);
+      e.model.surface.anchor_law.reset();  // the scheme's own anchor law and volume penalty
+      e.model.surface.volume_penalty.reset();
       r.apply_settings = true;
     }
   }

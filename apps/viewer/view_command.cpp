@@ -32,11 +32,11 @@ int run_view(ViewCli o) {
   v.model = cli::load_model(o.in);
   // A calibration keeps its method's name ("auto" re-picks when nu changes); a model file runs as it is and is remade
   // by its own method when the sliders change its material (interactive::live_method_for; "file" when hooke cannot).
-  v.settings.method = o.in.model_path.empty() ? o.in.method : interactive::live_method_for(v.model);
+  v.settings.model.method = o.in.model_path.empty() ? o.in.method : interactive::live_method_for(v.model);
   v.settings.material = v.model.material;
-  v.settings.density = v.model.density;
+  v.settings.model.density = v.model.density;
   if (calibrate::model_kind(v.model) == calibrate::ModelKind::kSurface)
-    v.settings.surface = cli::surface_options(o.in.surface);
+    v.settings.model.surface = cli::surface_options(o.in.surface);
   v.settings.simulator = o.settings.simulator;
   cli::apply_integrator_names(o.integrator, v.settings.simulator);
   v.settings.dynamics = o.settings.dynamics;

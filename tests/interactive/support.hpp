@@ -8,7 +8,7 @@ namespace hooke::interactive {
 
 inline LiveSettings settings(const std::string& method = "lloyd-tet", double nu = 0.3) {
   LiveSettings s;
-  s.method = method;
+  s.model.method = method;
   s.material = {material::Law::kLinear, 14630.0, nu};
   s.dynamics.damping_mass = 60.0;
   return s;

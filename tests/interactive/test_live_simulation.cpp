@@ -114,7 +114,7 @@ TEST(LiveSimulation, AFailedRecalibrationChangesNothing) {
   for (int k = 0; k < 5; ++k) sim.step();
   const VecX x = sim.positions();
   LiveSettings s = sim.settings();
-  s.method = "surface";  // needs a closed surface-triangle mesh
+  s.model.method = "surface";  // needs a closed surface-triangle mesh
   EXPECT_THROW(sim.apply(s), Error);
   s = sim.settings();
   s.dynamics.dt = -1.0;
@@ -122,7 +122,7 @@ TEST(LiveSimulation, AFailedRecalibrationChangesNothing) {
   s = sim.settings();
   s.material.poisson_ratio = 0.5;
   EXPECT_THROW(sim.apply(s), Error);
-  EXPECT_EQ(sim.settings().method, "lloyd-tet");
+  EXPECT_EQ(sim.settings().model.method, "lloyd-tet");
   EXPECT_EQ(sim.positions(), x);
   EXPECT_THROW(sim.grab({m.node_count()}), InvalidArgument);
   EXPECT_THROW(sim.grab({}), InvalidArgument);

@@ -89,7 +89,7 @@ TEST(PhysicsLoop, ABadCommandIsReportedNotThrown) {
   PhysicsLoop loop(LiveSimulation(cylinder(), settings()), false);
   loop.post([](LiveSimulation& sim) {
     LiveSettings s = sim.settings();
-    s.method = "no-such-method";
+    s.model.method = "no-such-method";
     sim.apply(s);
   });
   loop.start();

@@ -71,9 +71,9 @@ void define_live_simulation(py::module_& m) {
       .def(py::init([](const calibrate::CalibratedModel& model, const std::string& integrator, double dt,
                        const py::kwargs& kwargs) {
              interactive::LiveSettings s;
-             s.method = interactive::live_method_for(model);
+             s.model.method = interactive::live_method_for(model);
              s.material = model.material;
-             s.density = model.density;
+             s.model.density = model.density;
              s.simulator.integrator = solve::integrator_from_name(integrator);
              s.dynamics.dt = dt;
              return std::make_unique<SharedSimulation>(LiveSimulation(model, with_settings(s, kwargs)));

@@ -16,7 +16,7 @@ using Clock = std::chrono::steady_clock;
 
 LiveSimulation make_simulation(const mesh::Mesh& m, const HapticsBenchmarkOptions& o, double dt) {
   LiveSettings s;
-  s.method = o.method;
+  s.model.method = o.method;
   s.material = {material::Law::kLinear, 14630.0, o.poisson};
   s.dynamics.damping_mass = o.damping_mass;
   s.haptic_stiffness = o.stiffness;

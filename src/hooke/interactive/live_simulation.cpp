@@ -13,12 +13,8 @@ namespace {
 
 void check_settings(const LiveSettings& s) {
   solve::validate(s.dynamics);
-  if (!(s.density > 0.0) || !std::isfinite(s.density)) throw InvalidArgument("the density must be > 0 kg/m^3");
-}
-
-bool same_material(const material::Material& a, const material::Material& b) {
-  return a.law == b.law && a.youngs_modulus == b.youngs_modulus && a.poisson_ratio == b.poisson_ratio &&
-         a.plane == b.plane && a.thickness == b.thickness;
+  if (!(s.model.density > 0.0) || !std::isfinite(s.model.density))
+    throw InvalidArgument("the density must be > 0 kg/m^3");
 }
 
 bool same_surface(const calibrate::SurfaceOptions& a, const calibrate::SurfaceOptions& b) {
@@ -28,11 +24,7 @@ bool same_surface(const calibrate::SurfaceOptions& a, const calibrate::SurfaceOp
 }
 
 calibrate::CalibratedModel calibrate_for(const mesh::Mesh& mesh, const LiveSettings& s) {
-  calibrate::ModelOptions o;
-  o.method = s.method;
-  o.density = s.density;
-  o.surface = s.surface;
-  return calibrate::calibrate_model(mesh, s.material, o);
+  return calibrate::calibrate_model(mesh, s.material, s.model);
 }
 
 // The holding force: sum over the grabbed nodes of -(dE/dx - f), N.
@@ -157,10 +149,11 @@ LiveSimulation::LiveSimulation(calibrate::CalibratedModel model, const LiveSetti
   check_settings(settings);
   // "file", or the model's own method (or "auto" for a model "auto" chose) with its own material and density, runs
   // the model as it is.
-  const bool same_method = settings.method == model.method || (settings.method == "auto" && !model.choice.empty());
-  const bool own = calibrate::model_kind_of_method(settings.method) == calibrate::ModelKind::kFile;
+  const bool same_method =
+      settings.model.method == model.method || (settings.model.method == "auto" && !model.choice.empty());
+  const bool own = calibrate::model_kind_of_method(settings.model.method) == calibrate::ModelKind::kFile;
   const bool as_is =
-      own || (same_method && same_material(settings.material, model.material) && settings.density == model.density);
+      own || (same_method && settings.material == model.material && settings.model.density == model.density);
   if (!as_is) model = calibrate_for(model.mesh, settings);
   m->settings = settings;
   m->built = calibrate::build_model(model);
@@ -184,13 +177,14 @@ void LiveSimulation::apply(const LiveSettings& s) {
   check_settings(s);
   const LiveSettings& old = m->settings;
   // "file" keeps the model's own constants: a new material would show in the settings but not in the body.
-  const bool own = calibrate::model_kind_of_method(s.method) == calibrate::ModelKind::kFile;
-  if (own && (!same_material(s.material, m->model.material) || s.density != m->model.density ||
-              !same_surface(s.surface, old.surface)))
+  const bool own = calibrate::model_kind_of_method(s.model.method) == calibrate::ModelKind::kFile;
+  if (own && (s.material != m->model.material || s.model.density != m->model.density ||
+              !same_surface(s.model.surface, old.model.surface)))
     throw InvalidArgument("this model's constants are its own (method '" + m->model.method +
                           "', not one hooke calibrates): a new E, nu, density or surface option needs a method");
-  const bool recalibrate = !own && (s.method != old.method || !same_material(s.material, old.material) ||
-                                    s.density != old.density || !same_surface(s.surface, old.surface));
+  const bool recalibrate =
+      !own && (s.model.method != old.model.method || s.material != old.material ||
+               s.model.density != old.model.density || !same_surface(s.model.surface, old.model.surface));
   // Build everything new first (strong guarantee), then swap.
   std::optional<calibrate::CalibratedModel> model;
   calibrate::BuiltModel built = m->built;

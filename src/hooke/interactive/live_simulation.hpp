@@ -20,11 +20,10 @@ namespace hooke::interactive {
 
 /// What a user can change while the simulation runs.
 struct LiveSettings {
-  /// Model factory name (calibrate::model_method_names()); "file" keeps the model the simulation was made from.
-  std::string method = "auto";
-  material::Material material;        ///< E (Pa), nu, thickness (2D); the law matters for "fem" only
-  double density = 1000.0;            ///< kg/m^3 (> 0)
-  calibrate::SurfaceOptions surface;  ///< "surface" only: scheme, anchor law, volume penalty
+  /// How the model is made: the model factory's method (calibrate::model_method_names(), or "file": keep the
+  /// model the simulation was made from), density (kg/m^3, > 0) and surface-model options
+  calibrate::ModelOptions model;
+  material::Material material;  ///< E (Pa), nu, thickness (2D); the law matters for "fem" only
   /// the integrator and its options (solve::SimulatorOptions' defaults: quasi-newton, which runs every model)
   solve::SimulatorOptions simulator;
   solve::DynamicsSetup dynamics;  ///< dt (1 kHz by default, a haptic loop's rate), gravity, damping, Eq. 4's radius
@@ -48,10 +47,10 @@ std::string live_method_for(const calibrate::CalibratedModel& model);
 
 class LiveSimulation {
  public:
-  /// Calibrates settings.method on `mesh` (validated, m) for settings.material.
+  /// Calibrates settings.model.method on `mesh` (validated, m) for settings.material.
   /// @throws what calibrate::calibrate_model throws, InvalidArgument for settings out of range
   LiveSimulation(const mesh::Mesh& mesh, const LiveSettings& settings);
-  /// Runs `model` (a model file's contents, or a calibration): as it is when settings.method is "file", or names
+  /// Runs `model` (a model file's contents, or a calibration): as it is when settings.model.method is "file", or names
   /// model.method with model.material and model.density; otherwise recalibrates on model.mesh.
   /// @throws InvalidArgument when the model is invalid or the settings out of range
   LiveSimulation(calibrate::CalibratedModel model, const LiveSettings& settings);

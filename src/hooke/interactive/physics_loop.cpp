@@ -63,9 +63,9 @@ void apply_setting(LiveSettings& s, const std::string& key, const std::string& v
   } else if (key == "poisson") {
     s.material.poisson_ratio = solve::setting_number(key, value);
   } else if (key == "density") {
-    s.density = solve::setting_number(key, value);
+    s.model.density = solve::setting_number(key, value);
   } else if (key == "method") {
-    s.method = value;
+    s.model.method = value;
   } else if (key == "integrator") {
     s.simulator.integrator = solve::integrator_from_name(value);
   } else if (key == "haptic-stiffness") {

@@ -25,6 +25,8 @@ struct Material {
   double poisson_ratio = 0.0;    ///< nu, in (-1, 0.5)
   Plane plane = Plane::kStress;  ///< 2D meshes only
   double thickness = 1.0;        ///< t, m, > 0; 2D meshes only (plate thickness for plane stress)
+
+  bool operator==(const Material&) const = default;
 };
 
 /// Lamé parameters, Pa.
