@@ -47,6 +47,55 @@ MatX solve_all(const SparseCholesky& c, const MatX& loads) {
   return u;
 }
 
+// The self-weight problem on one support, on its free DOFs: the springs' and volume terms' stiffness, the unit
+// body loads, the FEM's displacements under them and each load's weight; `chol` factorises K(c) = c K_s + K_V.
+struct HeldProblem {
+  const SparseMatrix& ks;
+  const SparseMatrix& kv;
+  const MatX& loads;
+  const MatX& u_fem;
+  const VecX& w;
+  SparseCholesky& chol;
+
+  // G: sum over loads of w_a |u_a - u_FEM,a|^2.
+  double relative_g(const MatX& u_c) const { return weighted_dot(u_c - u_fem, u_c - u_fem, w); }
+  // u(c) into u, leaving K(c) factorised; false when K(c) is not positive definite.
+  bool displacements(double c, MatX& u) {
+    if (!chol.factorize(SparseMatrix(c * ks + kv))) return false;
+    u = solve_all(chol, loads);
+    return true;
+  }
+};
+
+// Gauss-Newton on G(c) from c = 1, du/dc = -K(c)^-1 K_s u(c), with step halving. @pre u = u(1) with K(1)
+// factorised. Returns c; u is then u(c); `steps` counts the Gauss-Newton steps.
+double gauss_newton_scale(HeldProblem& p, MatX& u, int& steps) {
+  double c = 1.0;
+  double g = p.relative_g(u);
+  for (int it = 0; it < 50; ++it) {
+    const MatX j = -solve_all(p.chol, MatX(p.ks * u));
+    const double jj = weighted_dot(j, j, p.w);
+    if (!(jj > 0.0)) break;
+    const double full = -weighted_dot(j, u - p.u_fem, p.w) / jj;
+    // A step that would change c below its 7th digit is not taken: it would move every spring by less than
+    // 1e-6 of itself, against the fit's own error of a few % (the femur's last step was 6e-12 of c), and
+    // evaluating it costs a factorisation (9 s on a scan's 233 000 DOFs).
+    if (std::abs(full) <= 1e-6 * c) break;
+    double accepted_step = 0.0;
+    MatX trial;
+    for (double step = full; accepted_step == 0.0 && std::abs(step) > 1e-14 * c; step *= 0.5)
+      if (c + step > 0.0 && p.displacements(c + step, trial) && p.relative_g(trial) <= g) {
+        accepted_step = step;  // chol now holds K(c + step), the next Jacobian's matrix
+        c += step;
+        g = p.relative_g(trial);
+        u = trial;
+      }
+    ++steps;
+    if (accepted_step == 0.0 || std::abs(accepted_step) <= 1e-10 * c) break;
+  }
+  return c;
+}
+
 }  // namespace
 
 SpringModel with_scaled_springs(SpringModel springs, double factor) {
@@ -90,14 +139,10 @@ StiffnessScale fit_self_weight_scale(const mesh::Mesh& mesh, const std::vector<m
     // Each load counts by its relative error (w_a = 1 / |u_FEM,a|^2), the measure of `hooke compare`: unweighted,
     // the sideways loads, which bend a slender body far more than the axial one compresses it, would decide c alone.
     const VecX w = u_fem.colwise().squaredNorm().cwiseInverse().transpose();
-    auto relative_g = [&](const MatX& u_c) { return weighted_dot(u_c - u_fem, u_c - u_fem, w); };
-    auto displacements = [&](double c, MatX& u) {
-      if (!chol.factorize(SparseMatrix(c * ks + kv))) return false;
-      u = solve_all(chol, loads);
-      return true;
-    };
+    HeldProblem held_problem{ks, kv, loads, u_fem, w, chol};
+    const auto relative_g = [&](const MatX& u_c) { return held_problem.relative_g(u_c); };
     MatX u;
-    if (!displacements(1.0, u)) {
+    if (!held_problem.displacements(1.0, u)) {
       out.note = "the fitted springs' stiffness held at the bottom is not positive definite";
       continue;
     }
@@ -114,29 +159,7 @@ StiffnessScale fit_self_weight_scale(const mesh::Mesh& mesh, const std::vector<m
       }
       c = weighted_dot(u, u, w) / cross;
     } else {
-      // Gauss-Newton on G(c), du/dc = -K(c)^-1 K_s u(c), with step halving.
-      double g = relative_g(u);
-      for (int it = 0; it < 50; ++it) {
-        const MatX j = -solve_all(chol, MatX(ks * u));
-        const double jj = weighted_dot(j, j, w);
-        if (!(jj > 0.0)) break;
-        const double full = -weighted_dot(j, u - u_fem, w) / jj;
-        // A step that would change c below its 7th digit is not taken: it would move every spring by less than
-        // 1e-6 of itself, against the fit's own error of a few % (the femur's last step was 6e-12 of c), and
-        // evaluating it costs a factorisation (9 s on a scan's 233 000 DOFs).
-        if (std::abs(full) <= 1e-6 * c) break;
-        double accepted_step = 0.0;
-        MatX trial;
-        for (double step = full; accepted_step == 0.0 && std::abs(step) > 1e-14 * c; step *= 0.5)
-          if (c + step > 0.0 && displacements(c + step, trial) && relative_g(trial) <= g) {
-            accepted_step = step;  // chol now holds K(c + step), the next Jacobian's matrix
-            c += step;
-            g = relative_g(trial);
-            u = trial;
-          }
-        ++out.gauss_newton;
-        if (accepted_step == 0.0 || std::abs(accepted_step) <= 1e-10 * c) break;
-      }
+      c = gauss_newton_scale(held_problem, u, out.gauss_newton);
     }
     out.factor = c;
     out.error_after = std::sqrt(relative_g(has_volume ? u : MatX(u / c)) / static_cast<double>(d));
