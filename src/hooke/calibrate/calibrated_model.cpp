@@ -33,8 +33,8 @@ ModelKind model_kind_of_method(std::string_view method) {
   if (const std::optional<ModelKind> kind = kind_of_name(method)) return *kind;
   std::string all = "auto";
   for (const std::string_view name : method_names()) all += ", " + std::string(name);
-  for (const ModelKind kind : {ModelKind::kSurface, ModelKind::kFem, ModelKind::kFile})
-    all += ", " + std::string(model_kind_name(kind));
+  for (const auto& [kind, name] : kKinds.entries)
+    if (kind != ModelKind::kSprings) all += ", " + std::string(name);
   throw InvalidArgument("unknown model method '" + std::string(method) + "' (use " + all + ")");
 }
 

@@ -106,11 +106,7 @@ std::vector<std::string> validity_warnings(const mesh::Mesh& m, const std::vecto
 Method method_from_name(std::string_view name) { return kNames.from_name(name); }
 std::string_view method_name(Method method) { return kNames.name(method); }
 
-std::vector<std::string_view> method_names() {
-  std::vector<std::string_view> out;
-  for (const auto& [method, name] : kNames.entries) out.push_back(name);
-  return out;
-}
+std::vector<std::string_view> method_names() { return kNames.names(); }
 
 SpringModel calibrate(const mesh::Mesh& m, const std::vector<material::Material>& materials, Method method) {
   using mesh::ElementKind;

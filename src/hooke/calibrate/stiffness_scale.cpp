@@ -140,7 +140,6 @@ StiffnessScale fit_self_weight_scale(const mesh::Mesh& mesh, const std::vector<m
     // the sideways loads, which bend a slender body far more than the axial one compresses it, would decide c alone.
     const VecX w = u_fem.colwise().squaredNorm().cwiseInverse().transpose();
     HeldProblem held_problem{ks, kv, loads, u_fem, w, chol};
-    const auto relative_g = [&](const MatX& u_c) { return held_problem.relative_g(u_c); };
     MatX u;
     if (!held_problem.displacements(1.0, u)) {
       out.note = "the fitted springs' stiffness held at the bottom is not positive definite";
@@ -148,7 +147,7 @@ StiffnessScale fit_self_weight_scale(const mesh::Mesh& mesh, const std::vector<m
     }
     out.note.clear();
     out.held_nodes = static_cast<int>(held.size());
-    out.error_before = std::sqrt(relative_g(u) / static_cast<double>(d));
+    out.error_before = std::sqrt(held_problem.relative_g(u) / static_cast<double>(d));
     double c = 1.0;
     if (!has_volume) {
       // u(c) = u(1) / c: the minimiser of sum_a w_a |u_a(1)/c - u_FEM,a|^2 over 1/c.
@@ -162,7 +161,7 @@ StiffnessScale fit_self_weight_scale(const mesh::Mesh& mesh, const std::vector<m
       c = gauss_newton_scale(held_problem, u, out.gauss_newton);
     }
     out.factor = c;
-    out.error_after = std::sqrt(relative_g(has_volume ? u : MatX(u / c)) / static_cast<double>(d));
+    out.error_after = std::sqrt(held_problem.relative_g(has_volume ? u : MatX(u / c)) / static_cast<double>(d));
     return out;
   }
   if (out.note.empty()) out.note = "no support up to 20 % of the height holds the body";

@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace hooke {
 
@@ -18,6 +19,12 @@ struct NameTable {
     for (const auto& [e, n] : entries)
       if (e == value) return n;
     return "unknown";
+  }
+  /// Every name, in the table's order.
+  std::vector<std::string_view> names() const {
+    std::vector<std::string_view> out;
+    for (const auto& [e, n] : entries) out.push_back(n);
+    return out;
   }
   /// The value named `name`. @throws InvalidArgument listing the valid names
   Enum from_name(std::string_view name) const {

@@ -340,7 +340,7 @@ bool SparseCholesky::factorize(const SparseMatrix& a) {
     if (!same_pattern) s.cholmod.analyzePattern(a);
     s.cholmod.factorize(a);
     s.ok = s.cholmod.info() == Eigen::Success;
-    if (s.ok) s.copy_factor();
+    if (s.ok && s.precision != SolvePrecision::kDouble) s.copy_factor();
   } else {
     if (!same_pattern) s.ldlt.analyzePattern(a);
     s.ldlt.factorize(a);

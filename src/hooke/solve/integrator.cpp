@@ -26,11 +26,7 @@ constexpr NameTable<QuasiNewtonHessian, 3> kHessians{"quasi-newton initial Hessi
 
 Integrator integrator_from_name(std::string_view name) { return kIntegrators.from_name(name); }
 std::string_view integrator_name(Integrator integrator) { return kIntegrators.name(integrator); }
-std::vector<std::string_view> integrator_names() {
-  std::vector<std::string_view> out;
-  for (const auto& [integrator, name] : kIntegrators.entries) out.push_back(name);
-  return out;
-}
+std::vector<std::string_view> integrator_names() { return kIntegrators.names(); }
 GlobalSolve global_solve_from_name(std::string_view name) { return kGlobalSolves.from_name(name); }
 std::string_view global_solve_name(GlobalSolve solve) { return kGlobalSolves.name(solve); }
 QuasiNewtonHessian quasi_newton_hessian_from_name(std::string_view name) { return kHessians.from_name(name); }
