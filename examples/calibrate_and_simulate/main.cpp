@@ -31,8 +31,8 @@ int main(int argc, char** argv) {
     hooke::experiments::SimulationOptions run;
     run.simulator.integrator = hooke::solve::Integrator::kLocalGlobal;
     run.steps = 100;
-    run.gravity = true;
-    run.damping_mass = 5.0;
+    run.dynamics.gravity = true;
+    run.dynamics.damping_mass = 5.0;
     hooke::VecX last;
     const auto summary = hooke::experiments::simulate(
         model, run, [&](int, double, const hooke::VecX& u, const hooke::VecX&) { last = u; });
