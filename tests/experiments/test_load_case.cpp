@@ -59,6 +59,18 @@ TEST(LoadCase, TractionForStrainGivesTheRequestedMeanDisplacement) {
     EXPECT_EQ(s.fem.report.status, solve::SolveStatus::kConverged);
   }
   EXPECT_EQ(linear_response_for_strain(cyl, {mat}, LoadKind::kStretch, 0.12).traction_pa, t);
+  // All three kinds from one factorisation: the single responses.
+  const std::vector<LoadKind> kinds{LoadKind::kStretch, LoadKind::kCompress, LoadKind::kShear};
+  const std::vector<StrainResponse> all = linear_responses_for_strain(cyl, {mat}, kinds, 0.12);
+  ASSERT_EQ(all.size(), 3u);
+  for (size_t k = 0; k < kinds.size(); ++k) {
+    const StrainResponse one = linear_response_for_strain(cyl, {mat}, kinds[k], 0.12);
+    EXPECT_NEAR(all[k].traction_pa, one.traction_pa, 1e-12 * one.traction_pa);
+    EXPECT_LT((all[k].fem.positions - one.fem.positions).norm(),
+              1e-12 * (one.fem.positions - model->rest_positions()).norm());
+  }
+  // Compression is stretch reversed (the same supports and the opposite forces): the same traction.
+  EXPECT_NEAR(all[1].traction_pa, all[0].traction_pa, 1e-12 * all[0].traction_pa);
 }
 
 TEST(LoadCase, MeshWithoutFlatTopIsRejected) {

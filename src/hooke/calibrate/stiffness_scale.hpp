@@ -18,7 +18,8 @@ namespace hooke::calibrate {
 struct StiffnessScale {
   double factor = 1.0;      ///< c, dimensionless (> 0); 1 when the fit could not be made (see `note`)
   int held_nodes = 0;       ///< nodes held during the fit: the bottom face (min of the last coordinate) or slab
-  int gauss_newton = 0;     ///< Gauss-Newton steps (0: the closed form of a springs-only model)
+  int gauss_newton = 0;     ///< Gauss-Newton steps on the full model (0: closed form, or the reduced start held)
+  int factorizations = 0;   ///< sparse factorisations made: the FEM's, then K(c) for each c evaluated
   double error_before = 0;  ///< sqrt(G(1) / dim): RMS over the loads of the relative node error, unscaled springs
   double error_after = 0;   ///< the same at c
   std::string note;         ///< why c = 1 was kept, when it was (empty otherwise)
@@ -30,7 +31,8 @@ struct StiffnessScale {
 /// relative node errors G(c) = sum_a |u_a(c) - u_FEM,a|^2 / |u_FEM,a|^2 (Eq. 1 with each load weighted by its own
 /// size). Linear in the regime of small loads, so with springs alone u(c) = u(1) / c and
 /// c = sum_a w_a |u_a(1)|^2 / sum_a w_a u_a(1) . u_FEM,a in closed form; with volume terms G is minimised by
-/// Gauss-Newton on c (dG/dc from one extra solve per step).
+/// Gauss-Newton on c (dG/dc from one extra solve per step), started from the minimiser of G on a Krylov subspace
+/// built from the first factorisation (solves only), so that the full model normally needs one more factorisation.
 /// When the bottom face does not hold the body (a mesh standing on a point or an edge), the nodes within 5 %,
 /// 10 %, then 20 % of the height from the bottom are held. When no such support gives positive-definite
 /// matrices, c = 1 is returned with a note; this function never throws for a valid mesh and model.

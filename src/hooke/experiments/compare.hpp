@@ -74,6 +74,13 @@ Comparison compare_surface(const mesh::Mesh& surface, const material::Material& 
 /// @throws InvalidArgument for the "fem" model (nothing to compare) or a model validate_model rejects
 Comparison compare_calibrated(const calibrate::CalibratedModel& model, const CompareOptions& options, int layers = 4);
 
+/// compare_calibrated on each of `kinds` (options.load is not used): the FEM references from one factorisation at a
+/// strain, and a spring or FEM-kind model's statics by static_equilibria (one stability test of the rest state and
+/// one kept factorisation for all the loads). The same comparisons as separate calls, to Newton's tolerance.
+std::vector<Comparison> compare_calibrated_cases(const calibrate::CalibratedModel& model,
+                                                 const std::vector<LoadKind>& kinds, const CompareOptions& options,
+                                                 int layers = 4);
+
 /// The certificate a model is shipped with (`hooke calibrate --certify`): stretch, compress and shear (or the cases
 /// `loads` names, in its order) at mean linear-FEM strain `strain` against the linear FEM, each case's max / mean
 /// node error (m) and relative L2.

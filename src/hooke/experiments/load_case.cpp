@@ -87,23 +87,43 @@ double traction_for_strain(const mesh::Mesh& mesh, const std::vector<material::M
 
 StrainResponse linear_response_for_strain(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
                                           LoadKind kind, double strain) {
+  return std::move(linear_responses_for_strain(mesh, materials, {kind}, strain).front());
+}
+
+std::vector<StrainResponse> linear_responses_for_strain(const mesh::Mesh& mesh,
+                                                        const std::vector<material::Material>& materials,
+                                                        const std::vector<LoadKind>& kinds, double strain) {
   if (!(strain > 0.0) || !std::isfinite(strain)) throw InvalidArgument("the strain must be a positive number");
   model::Problem problem = model::make_problem(fem::linear_model(mesh, materials));
-  const LoadCase unit = make_load_case(mesh, kind, 1.0, materials.at(0).thickness);
-  apply(unit, problem);
-  StrainResponse out;
-  out.fem = solve::linear_static(problem);
-  solve::require_converged(out.fem.report);
-  const double u = mean_top_displacement(unit, problem, out.fem.positions);
-  if (!(u > 0.0)) throw SolverFailure("the unit load produced no displacement along the load direction");
-  const double t = strain * unit.height / u;
-  out.traction_pa = t;
+  std::vector<LoadCase> units;
+  std::vector<VecX> forces;
+  for (LoadKind kind : kinds) {
+    units.push_back(make_load_case(mesh, kind, 1.0, materials.at(0).thickness));
+    // Every kind clamps the same bottom nodes (make_load_case), so one factorisation serves them all.
+    if (units.back().fixed_nodes != units.front().fixed_nodes)
+      throw InvalidArgument("linear_responses_for_strain: load cases with different supports");
+    forces.push_back(units.back().nodal_forces);
+  }
+  if (!units.empty()) model::fix_nodes(problem, units.front().fixed_nodes);
+  for (VecX& f : forces) model::zero_fixed_forces(problem.fixed_dofs, f);
+  std::vector<solve::StaticResult> fem = solve::linear_statics(problem, forces);
+  std::vector<StrainResponse> out;
   const VecX& rest = problem.model->rest_positions();
-  out.fem.positions = rest + t * (out.fem.positions - rest);
-  solve::SolveReport& r = out.fem.report;
-  r.residual *= t;
-  r.reference_force *= t;
-  for (double& h : r.residual_history) h *= t;
+  for (size_t k = 0; k < kinds.size(); ++k) {
+    StrainResponse r;
+    r.fem = std::move(fem[k]);
+    solve::require_converged(r.fem.report);
+    const double u = mean_top_displacement(units[k], problem, r.fem.positions);
+    if (!(u > 0.0)) throw SolverFailure("the unit load produced no displacement along the load direction");
+    const double t = strain * units[k].height / u;
+    r.traction_pa = t;
+    r.fem.positions = rest + t * (r.fem.positions - rest);
+    solve::SolveReport& rep = r.fem.report;
+    rep.residual *= t;
+    rep.reference_force *= t;
+    for (double& h : rep.residual_history) h *= t;
+    out.push_back(std::move(r));
+  }
   return out;
 }
 

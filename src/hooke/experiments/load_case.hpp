@@ -65,5 +65,10 @@ struct StrainResponse {
 /// @pre strain > 0 @throws as traction_for_strain
 StrainResponse linear_response_for_strain(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
                                           LoadKind kind, double strain);
+/// linear_response_for_strain for each of `kinds` (which share their supports) from one factorisation.
+/// @pre strain > 0 @throws as traction_for_strain
+std::vector<StrainResponse> linear_responses_for_strain(const mesh::Mesh& mesh,
+                                                        const std::vector<material::Material>& materials,
+                                                        const std::vector<LoadKind>& kinds, double strain);
 
 }  // namespace hooke::experiments

@@ -335,6 +335,12 @@ bool NewtonSolver::direction(NewtonObjective& f, const VecX& z, const VecX& grad
   return ok;
 }
 
+bool NewtonSolver::factorize_at(NewtonObjective& f, const VecX& z) {
+  if (m->cg()) throw InvalidArgument("NewtonSolver::factorize_at needs the cholesky linear solver");
+  m->have_factor = m->factorize(f.newton_matrix(z, false));
+  return m->have_factor;
+}
+
 void NewtonSolver::invalidate() {
   m->have_factor = false;
   m->cg_r.resize(0);

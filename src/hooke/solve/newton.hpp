@@ -101,6 +101,11 @@ class NewtonSolver {
   /// `cg_tolerance`. @return false when no positive-definite shift of the matrix was found
   bool direction(NewtonObjective& f, const VecX& z, const VecX& gradient, double cg_tolerance, VecX& delta);
 
+  /// Factorises the exact Newton matrix at z and keeps the factorisation, as the first step of the next solve()
+  /// would (with reuse_factorization, that solve then starts from it). Cholesky only.
+  /// @return false when the matrix is not positive definite (nothing is kept then)
+  bool factorize_at(NewtonObjective& f, const VecX& z);
+
   /// Drops the kept factorisation and preconditioner: call when the objective's matrix changes in kind (a new time
   /// step, other fixed DOFs, another objective).
   void invalidate();

@@ -27,29 +27,37 @@ std::string format_double(double v) {
 // (nodes in no element) are held with the fixed ones.
 class StaticObjective final : public NewtonObjective {
  public:
-  StaticObjective(const model::Problem& problem, const model::FreeMap& map, SolveReport& report)
-      : m_problem(problem), m_assembly(*problem.model), m_fixed(problem.model->dof_count(), 1), m_report(report) {
+  StaticObjective(const model::Problem& problem, const model::FreeMap& map)
+      : m_problem(problem), m_assembly(*problem.model), m_fixed(problem.model->dof_count(), 1) {
     for (const int i : map.free) m_fixed[static_cast<size_t>(i)] = 0;
     const VecX& rest = problem.model->rest_positions();
     m_size = std::max(rest.maxCoeff() - rest.minCoeff(), 1e-300);
     m_model_gradient.setZero(rest.size());
   }
   void set_load_factor(double lambda) { m_lambda = lambda; }
+  // The load (flat, N; as problem.external_force) and the report that assembly times go to, until the next call.
+  void set_load(const VecX& force, SolveReport& report) {
+    m_force = &force;
+    m_report = &report;
+  }
 
   bool conservative() const override { return m_problem.model->conservative(); }
   bool exact_hessian() const override { return m_problem.model->exact_hessian(); }
   const std::vector<char>& fixed() const override { return m_fixed; }
   int dim() const override { return m_problem.model->dim(); }
   double size() const override { return m_size; }
-  double value(const VecX& z) override { return model::potential_energy(m_problem, z, m_lambda); }
+  double value(const VecX& z) override {
+    // model::potential_energy with this load
+    return m_problem.model->energy(z) - m_lambda * m_force->dot(z - m_problem.model->rest_positions());
+  }
   // The convergence test's scale is max(|lambda f|, |dE/dx|) with the internal force over all DOFs: the reactions
   // count where the body is held by prescribed displacements alone.
   void gradient(const VecX& z, VecX& out) override {
     const auto t0 = Clock::now();
     m_problem.model->gradient(z, m_model_gradient, m_problem.interaction_or_null());
-    m_report.assembly_seconds += seconds_since(t0);
-    out = m_model_gradient - m_lambda * m_problem.external_force;
-    m_scale = std::max((m_lambda * m_problem.external_force).norm(), m_model_gradient.norm());
+    m_report->assembly_seconds += seconds_since(t0);
+    out = m_model_gradient - m_lambda * *m_force;
+    m_scale = std::max(m_lambda * m_force->norm(), m_model_gradient.norm());
     for (size_t i = 0; i < m_fixed.size(); ++i)
       if (m_fixed[i]) out(static_cast<Eigen::Index>(i)) = 0.0;
   }
@@ -58,7 +66,7 @@ class StaticObjective final : public NewtonObjective {
     const auto t0 = Clock::now();
     m_assembly.assemble(z, project, m_problem.interaction_or_null());
     detail::constrain(m_assembly.matrix(), m_fixed, 1);
-    m_report.assembly_seconds += seconds_since(t0);
+    m_report->assembly_seconds += seconds_since(t0);
     return m_assembly.matrix();
   }
   const std::vector<int>& diagonal() const override { return m_assembly.diagonal(); }
@@ -68,7 +76,7 @@ class StaticObjective final : public NewtonObjective {
     const auto t0 = Clock::now();
     m_assembly.assemble(z, false, m_problem.interaction_or_null());
     SparseMatrix h = map.restrict(m_assembly.matrix());
-    m_report.assembly_seconds += seconds_since(t0);
+    m_report->assembly_seconds += seconds_since(t0);
     return h;
   }
 
@@ -76,27 +84,37 @@ class StaticObjective final : public NewtonObjective {
   const model::Problem& m_problem;
   model::HessianAssembly m_assembly;  // the Hessian's pattern, built once for the whole solve
   std::vector<char> m_fixed;
-  SolveReport& m_report;
+  const VecX* m_force = nullptr;
+  SolveReport* m_report = nullptr;
   double m_size = 1.0, m_lambda = 1.0, m_scale = 0.0;
   VecX m_model_gradient;
 };
 
-// Newton at one load factor from x (updated in place), and the stability test, over one objective.
+// Newton at one load factor from x (updated in place), and the stability test, over one objective; the load and
+// the report are those of begin(), so that one solver (and its kept factorisation) serves several loads.
 struct LoadStepper {
-  LoadStepper(StaticObjective& f, const model::FreeMap& free, SolveReport& r, const NewtonOptions& options)
-      : objective(f), map(free), report(r), newton(options), stability_factor(options.backend) {}
+  LoadStepper(StaticObjective& f, const model::FreeMap& free, const NewtonOptions& options)
+      : objective(f), map(free), newton(options), stability_factor(options.backend) {}
 
   StaticObjective& objective;
   const model::FreeMap& map;
-  SolveReport& report;
+  SolveReport* report = nullptr;
   NewtonSolver newton;
   SparseCholesky stability_factor;
 
+  // A new load (as problem.external_force) from the start state x0, its outcome into `r`.
+  void begin(const VecX& force, const VecX& x0, SolveReport& r) {
+    report = &r;
+    objective.set_load(force, r);
+    x_stable = x0;
+    lambda_stable = 0.0;
+  }
+
   bool solve_step(VecX& x, double lambda) {
     objective.set_load_factor(lambda);
-    const NewtonReport r = newton.solve(objective, x, &report.residual_history);
-    report.iterations += r.iterations;
-    report.residual = r.residual;
+    const NewtonReport r = newton.solve(objective, x, &report->residual_history);
+    report->iterations += r.iterations;
+    report->residual = r.residual;
     return r.converged;
   }
 
@@ -111,7 +129,7 @@ struct LoadStepper {
   bool stable_at(const VecX& x) {
     const auto t0 = Clock::now();
     const bool ok = stability_factor.factorize(objective.free_tangent(x, map));
-    report.factorization_seconds += seconds_since(t0);
+    report->factorization_seconds += seconds_since(t0);
     return ok;
   }
 
@@ -122,7 +140,7 @@ struct LoadStepper {
   void accept(VecX x, double lambda) {
     x_stable = std::move(x);
     lambda_stable = lambda;
-    ++report.load_steps;
+    ++report->load_steps;
   }
 
   // Newton at the full load from an initial guess (its free DOFs); accepted when it converges (stably).
@@ -167,76 +185,81 @@ void require_converged(const SolveReport& report) {
   if (report.status != SolveStatus::kConverged) throw SolverFailure(report.message);
 }
 
-StaticResult linear_static(const model::Problem& problem, const LinearOptions& options) {
+std::vector<StaticResult> linear_statics(const model::Problem& problem, const std::vector<VecX>& loads,
+                                         const LinearOptions& options) {
   const auto t_start = Clock::now();
-  StaticResult result;
-  SolveReport& rep = result.report;
   const model::Model& m = *problem.model;
+  for (const VecX& f : loads)
+    if (f.size() != m.dof_count())
+      throw InvalidArgument("linear_statics: a load has " + std::to_string(f.size()) + " entries, the model " +
+                            std::to_string(m.dof_count()) + " DOFs");
   const model::FreeMap map(model::free_dofs(problem), m.dof_count());
-  rep.free_dofs = map.size();
-  VecX x = model::initial_positions(problem);
-  const VecX u_prescribed = x - m.rest_positions();
+  const VecX x0 = model::initial_positions(problem);
+  const VecX u_prescribed = x0 - m.rest_positions();
 
   auto t0 = Clock::now();
   const SparseMatrix k_full = m.hessian(m.rest_positions(), false, problem.interaction_or_null());
   // Linearised about the rest state: K u = f - g(X) - K u_c, with g(X) the (normally zero) internal force at rest
   // and u_c the prescribed displacements.
-  const VecX rhs_full =
-      problem.external_force - m.gradient(m.rest_positions(), problem.interaction_or_null()) - k_full * u_prescribed;
+  const VecX internal = m.gradient(m.rest_positions(), problem.interaction_or_null()) + k_full * u_prescribed;
   const SparseMatrix k = map.restrict(k_full);
-  rep.assembly_seconds = seconds_since(t0);
+  const double assembly = seconds_since(t0);
 
   SparseCholesky chol(options.backend);
-  rep.backend = std::string(chol.backend_name());
   t0 = Clock::now();
   const bool ok = chol.factorize(k);
-  rep.factorization_seconds = seconds_since(t0);
-  rep.reference_force = problem.external_force.norm();
-  if (!ok) {
-    rep.status = SolveStatus::kSingular;
-    rep.message = "the stiffness matrix on the " + std::to_string(map.size()) +
-                  " free DOFs is not positive definite: the body is not held against rigid motion (fix more nodes)";
-    result.positions = x;
+  const double factorization = seconds_since(t0);
+  const double min_eigenvalue = ok && options.estimate_min_eigenvalue ? smallest_eigenvalue(k) : 0.0;
+  std::vector<StaticResult> out;
+  for (size_t j = 0; j < loads.size(); ++j) {
+    StaticResult result;
+    SolveReport& rep = result.report;
+    rep.free_dofs = map.size();
+    rep.backend = std::string(chol.backend_name());
+    rep.reference_force = loads[j].norm();
+    if (j == 0) {  // the shared assembly and factorisation count for the first load
+      rep.assembly_seconds = assembly;
+      rep.factorization_seconds = factorization;
+    }
+    result.positions = x0;
+    if (!ok) {
+      rep.status = SolveStatus::kSingular;
+      rep.message = "the stiffness matrix on the " + std::to_string(map.size()) +
+                    " free DOFs is not positive definite: the body is not held against rigid motion (fix more nodes)";
+    } else {
+      const VecX rhs = map.restrict(VecX(loads[j] - internal));
+      const VecX u = chol.solve(rhs);
+      for (int i = 0; i < map.size(); ++i) result.positions(map.free[static_cast<size_t>(i)]) += u(i);
+      rep.residual = (k * u - rhs).norm();
+      rep.iterations = 1;
+      rep.load_steps = 1;
+      rep.load_factor = 1.0;
+      rep.status = SolveStatus::kConverged;
+      rep.min_eigenvalue = min_eigenvalue;
+      rep.message = "linear solve on " + std::to_string(map.size()) + " DOFs";
+    }
     rep.solve_seconds = seconds_since(t_start);
-    return result;
+    out.push_back(std::move(result));
   }
-  const VecX u = chol.solve(map.restrict(rhs_full));
-  for (int i = 0; i < map.size(); ++i) x(map.free[static_cast<size_t>(i)]) += u(i);
-  rep.residual = (k * u - map.restrict(rhs_full)).norm();
-  rep.iterations = 1;
-  rep.load_steps = 1;
-  rep.load_factor = 1.0;
-  rep.status = SolveStatus::kConverged;
-  if (options.estimate_min_eigenvalue) rep.min_eigenvalue = smallest_eigenvalue(k);
-  rep.message = "linear solve on " + std::to_string(map.size()) + " DOFs";
-  result.positions = std::move(x);
-  rep.solve_seconds = seconds_since(t_start);
-  return result;
+  return out;
 }
 
-StaticResult static_equilibrium(const model::Problem& problem, const StaticOptions& options) {
-  if (options.check_stability && !problem.model->exact_hessian()) {
-    // Positive definiteness of an approximate Hessian says nothing about stability.
-    StaticOptions unchecked = options;
-    unchecked.check_stability = false;
-    StaticResult r = static_equilibrium(problem, unchecked);
-    r.report.message += " (stability not checked: the model's Hessian is an approximation)";
-    return r;
-  }
+StaticResult linear_static(const model::Problem& problem, const LinearOptions& options) {
+  return std::move(linear_statics(problem, {problem.external_force}, options).front());
+}
+
+namespace {
+
+// Load stepping under the load `newton` began with: the body of static_equilibrium for one load. `start_stable`:
+// the start state's stability test, already made (once for all loads).
+StaticResult solve_load(LoadStepper& newton, const StaticOptions& options, bool start_stable) {
   const auto t_start = Clock::now();
   StaticResult result;
-  SolveReport& rep = result.report;
-  const model::Model& m = *problem.model;
-  const model::FreeMap map(model::free_dofs(problem), m.dof_count());
-  rep.free_dofs = map.size();
-  rep.reference_force = problem.external_force.norm();
-  StaticObjective objective(problem, map, rep);
-  LoadStepper newton(objective, map, rep, options.newton);
-  rep.backend = std::string(newton.newton.backend_name());
-
-  newton.x_stable = model::initial_positions(problem);
+  SolveReport& rep = *newton.report;
+  const double factorization_before = newton.newton.factorization_seconds();
   const VecX& x_stable = newton.x_stable;
   const double& lambda_stable = newton.lambda_stable;
+  const model::FreeMap& map = newton.map;
   double step = 1.0 / std::max(1, options.initial_load_steps);
   auto finish = [&](SolveStatus status, std::string message) {
     rep.status = status;
@@ -245,24 +268,20 @@ StaticResult static_equilibrium(const model::Problem& problem, const StaticOptio
     rep.residual = newton.residual(x_stable, lambda_stable);
     if (options.check_stability && map.size() > 0 &&
         (options.estimate_min_eigenvalue || status != SolveStatus::kConverged))
-      rep.min_eigenvalue = smallest_eigenvalue(objective.free_tangent(x_stable, map));
-    rep.factorization_seconds += newton.newton.factorization_seconds();
+      rep.min_eigenvalue = smallest_eigenvalue(newton.objective.free_tangent(x_stable, map));
+    rep.factorization_seconds += newton.newton.factorization_seconds() - factorization_before;
     result.positions = x_stable;
-    rep.solve_seconds = seconds_since(t_start);
+    rep.solve_seconds += seconds_since(t_start);
+    result.report = std::move(rep);
     return result;
   };
 
-  if (options.check_stability && !newton.stable_at(x_stable))
+  if (!start_stable)
     return finish(SolveStatus::kSingular,
                   "the tangent stiffness at the start is not positive definite: the body is "
                   "not held against rigid motion, or starts in an unstable state");
 
-  if (options.start.size() > 0) {
-    if (options.start.size() != m.dof_count())
-      throw InvalidArgument("static_equilibrium: the initial guess has " + std::to_string(options.start.size()) +
-                            " entries, the model " + std::to_string(m.dof_count()) + " DOFs");
-    newton.try_start(options.start, options.check_stability);
-  }
+  if (options.start.size() > 0) newton.try_start(options.start, options.check_stability);
   while (lambda_stable < 1.0) {
     const double lambda = std::min(1.0, lambda_stable + step);
     VecX x = x_stable;
@@ -297,6 +316,62 @@ StaticResult static_equilibrium(const model::Problem& problem, const StaticOptio
     return finish(SolveStatus::kConverged, "the start already is the equilibrium (residual within the tolerance)");
   return finish(SolveStatus::kConverged, "converged in " + count(rep.iterations, "Newton iteration") + " over " +
                                              count(rep.load_steps, "load step"));
+}
+
+}  // namespace
+
+std::vector<StaticResult> static_equilibria(const model::Problem& problem, const std::vector<VecX>& loads,
+                                            const StaticOptions& options) {
+  if (options.check_stability && !problem.model->exact_hessian()) {
+    // Positive definiteness of an approximate Hessian says nothing about stability.
+    StaticOptions unchecked = options;
+    unchecked.check_stability = false;
+    std::vector<StaticResult> r = static_equilibria(problem, loads, unchecked);
+    for (StaticResult& one : r)
+      one.report.message += " (stability not checked: the model's Hessian is an approximation)";
+    return r;
+  }
+  const model::Model& m = *problem.model;
+  for (const VecX& f : loads)
+    if (f.size() != m.dof_count())
+      throw InvalidArgument("static_equilibria: a load has " + std::to_string(f.size()) + " entries, the model " +
+                            std::to_string(m.dof_count()) + " DOFs");
+  if (options.start.size() > 0 && options.start.size() != m.dof_count())
+    throw InvalidArgument("static_equilibrium: the initial guess has " + std::to_string(options.start.size()) +
+                          " entries, the model " + std::to_string(m.dof_count()) + " DOFs");
+  if (options.start.size() > 0 && loads.size() > 1)
+    throw InvalidArgument("static_equilibria: an initial guess is for one load, not " + std::to_string(loads.size()));
+  const model::FreeMap map(model::free_dofs(problem), m.dof_count());
+  StaticObjective objective(problem, map);
+  LoadStepper newton(objective, map, options.newton);
+  const VecX x0 = model::initial_positions(problem);
+  std::vector<StaticResult> out;
+  bool start_stable = true;
+  for (size_t k = 0; k < loads.size(); ++k) {
+    SolveReport rep;
+    rep.free_dofs = map.size();
+    rep.reference_force = loads[k].norm();
+    rep.backend = std::string(newton.newton.backend_name());
+    newton.begin(loads[k], x0, rep);
+    if (k == 0 && options.check_stability) {  // the same start state, supports and tangent for every load
+      const auto t0 = Clock::now();
+      if (options.newton.reuse_factorization && options.newton.linear_solver == NewtonLinearSolver::kCholesky) {
+        // The Newton matrix at the start is the tangent there with identity rows and columns on the held DOFs:
+        // positive definite exactly when the tangent on the free DOFs is, and modified Newton starts from it.
+        start_stable = newton.newton.factorize_at(objective, x0);
+        rep.factorization_seconds += seconds_since(t0);
+      } else {
+        start_stable = newton.stable_at(x0);
+      }
+      rep.solve_seconds = seconds_since(t0);
+    }
+    out.push_back(solve_load(newton, options, start_stable));
+  }
+  return out;
+}
+
+StaticResult static_equilibrium(const model::Problem& problem, const StaticOptions& options) {
+  return std::move(static_equilibria(problem, {problem.external_force}, options).front());
 }
 
 }  // namespace hooke::solve

@@ -56,6 +56,11 @@ struct LinearOptions {
 /// the linear law; the linearised model otherwise) and u the displacement of the prescribed DOFs applied.
 StaticResult linear_static(const model::Problem& problem, const LinearOptions& options = {});
 
+/// linear_static under each of several loads (flat, N, size dof_count, each as problem.external_force would be) on
+/// the same problem: one assembly and one factorisation for all (their times are in the first report).
+std::vector<StaticResult> linear_statics(const model::Problem& problem, const std::vector<VecX>& loads,
+                                         const LinearOptions& options = {});
+
 /// Options of the nonlinear static solve: Newton's (the same core as the implicit time steps) and the load
 /// stepping around it.
 struct StaticOptions {
@@ -84,5 +89,13 @@ struct StaticOptions {
 /// Hessian is approximate (Model::exact_hessian() false) Newton steps are refined by GMRES and stability is
 /// not checked (the message says so).
 StaticResult static_equilibrium(const model::Problem& problem, const StaticOptions& options = {});
+
+/// static_equilibrium under each of several loads (flat, N, size dof_count, each as problem.external_force would be)
+/// on the same problem, one after the other: the start state's stability is tested once for all (the supports and
+/// the start are the same), and one Newton solver serves them all, so that with options.newton.reuse_factorization
+/// the factorisation kept from one load starts the next (modified Newton). The results are those of separate
+/// static_equilibrium calls to Newton's tolerance. @throws InvalidArgument with options.start and several loads
+std::vector<StaticResult> static_equilibria(const model::Problem& problem, const std::vector<VecX>& loads,
+                                            const StaticOptions& options = {});
 
 }  // namespace hooke::solve
