@@ -13,18 +13,6 @@
 namespace hooke::calibrate {
 namespace {
 
-constexpr NameTable<Method, 10> kNames{"calibration method",
-                                       {{{Method::kVanGelder, "vangelder"},
-                                         {Method::kLloydEquilateral, "lloyd-equilateral"},
-                                         {Method::kLloydTriangle, "lloyd-triangle"},
-                                         {Method::kLloydSquare, "lloyd-square"},
-                                         {Method::kLloydTet, "lloyd-tet"},
-                                         {Method::kLloydTetVolume, "lloyd-tet-volume"},
-                                         {Method::kStiffnessFit, "stiffness-fit"},
-                                         {Method::kStiffnessFitVolume, "stiffness-fit-volume"},
-                                         {Method::kAnyNuTet, "any-nu-tet"},
-                                         {Method::kAnyNuTriangle, "any-nu-triangle"}}}};
-
 void require_kind(const mesh::Mesh& m, bool ok, Method method, const char* what) {
   if (!ok)
     throw InvalidArgument("method '" + std::string(method_name(method)) + "' needs " + what + ", not a " +
@@ -102,11 +90,6 @@ std::vector<std::string> validity_warnings(const mesh::Mesh& m, const std::vecto
   }
   return out;
 }
-
-Method method_from_name(std::string_view name) { return kNames.from_name(name); }
-std::string_view method_name(Method method) { return kNames.name(method); }
-
-std::vector<std::string_view> method_names() { return kNames.names(); }
 
 SpringModel calibrate(const mesh::Mesh& m, const std::vector<material::Material>& materials, Method method) {
   using mesh::ElementKind;
