@@ -7,7 +7,6 @@
 #include <hooke/calibrate/stiffness_scale.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
-#include <hooke/core/name_table.hpp>
 #include <hooke/mesh/measure.hpp>
 
 namespace hooke::calibrate {
