@@ -137,21 +137,25 @@ double reduced_minimiser(const HeldProblem& p, const MatX& u) {
   ReducedSelfWeight r;
   r.w = p.w;
   r.fem_sq = p.u_fem.colwise().squaredNorm().transpose();
-  MatX v(u.rows(), 0);
+  MatX v(u.rows(), 0), ksv(u.rows(), 0), kvv(u.rows(), 0);  // V, K_s V and K_V V, grown a block at a time
   MatX block = u;
   double c = 0.0;
   for (int k = 0; k < 12; ++k) {
     const Eigen::Index first = v.cols();
     if (orthonormal_append(v, block) == 0) break;
-    const MatX ks_new = p.ks * v.rightCols(v.cols() - first);
-    r.as = v.transpose() * (p.ks * v);
-    r.av = v.transpose() * (p.kv * v);
+    const Eigen::Index added = v.cols() - first;
+    ksv.conservativeResize(Eigen::NoChange, v.cols());
+    kvv.conservativeResize(Eigen::NoChange, v.cols());
+    ksv.rightCols(added) = p.ks * v.rightCols(added);
+    kvv.rightCols(added) = p.kv * v.rightCols(added);
+    r.as = v.transpose() * ksv;
+    r.av = v.transpose() * kvv;
     r.b = v.transpose() * p.loads;
     r.vu = v.transpose() * p.u_fem;
     const double next = r.minimiser();
     if (k > 0 && next > 0.0 && std::abs(next - c) <= 1e-9 * next) return next;
     c = next;
-    block = solve_all(p.chol, ks_new);
+    block = solve_all(p.chol, MatX(ksv.rightCols(added)));
   }
   return c;
 }

@@ -49,7 +49,12 @@ VecX initial_positions(const Problem& problem) {
 }
 
 double potential_energy(const Problem& problem, const Eigen::Ref<const VecX>& x, double load_factor) {
-  return problem.model->energy(x) - load_factor * problem.external_force.dot(x - problem.model->rest_positions());
+  return potential_energy(problem, x, problem.external_force, load_factor);
+}
+
+double potential_energy(const Problem& problem, const Eigen::Ref<const VecX>& x, const VecX& force,
+                        double load_factor) {
+  return problem.model->energy(x) - load_factor * force.dot(x - problem.model->rest_positions());
 }
 
 }  // namespace hooke::model

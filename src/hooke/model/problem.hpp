@@ -37,6 +37,8 @@ std::vector<int> free_dofs(const Problem& problem);
 
 /// Total potential energy Pi(x) = E(x) - f . (x - X), J, at load factor `load_factor` on f.
 double potential_energy(const Problem& problem, const Eigen::Ref<const VecX>& x, double load_factor = 1.0);
+/// The same with the load `force` (flat, N, size dof_count) in place of the problem's own.
+double potential_energy(const Problem& problem, const Eigen::Ref<const VecX>& x, const VecX& force, double load_factor);
 
 /// Starting positions: rest positions with the prescribed positions of fixed DOFs applied.
 VecX initial_positions(const Problem& problem);

@@ -23,6 +23,14 @@ std::string format_double(double v) {
   return s.str();
 }
 
+// Every load of a several-load solve has one entry per DOF. @throws InvalidArgument naming `who`
+void require_load_sizes(const char* who, const std::vector<VecX>& loads, Eigen::Index dofs) {
+  for (const VecX& f : loads)
+    if (f.size() != dofs)
+      throw InvalidArgument(std::string(who) + ": a load has " + std::to_string(f.size()) + " entries, the model " +
+                            std::to_string(dofs) + " DOFs");
+}
+
 // Pi(x) = E(x) - lambda f.(x - X) over the free DOFs of a problem, for NewtonSolver. DOFs that carry no stiffness
 // (nodes in no element) are held with the fixed ones.
 class StaticObjective final : public NewtonObjective {
@@ -46,10 +54,7 @@ class StaticObjective final : public NewtonObjective {
   const std::vector<char>& fixed() const override { return m_fixed; }
   int dim() const override { return m_problem.model->dim(); }
   double size() const override { return m_size; }
-  double value(const VecX& z) override {
-    // model::potential_energy with this load
-    return m_problem.model->energy(z) - m_lambda * m_force->dot(z - m_problem.model->rest_positions());
-  }
+  double value(const VecX& z) override { return model::potential_energy(m_problem, z, *m_force, m_lambda); }
   // The convergence test's scale is max(|lambda f|, |dE/dx|) with the internal force over all DOFs: the reactions
   // count where the body is held by prescribed displacements alone.
   void gradient(const VecX& z, VecX& out) override {
@@ -189,10 +194,7 @@ std::vector<StaticResult> linear_statics(const model::Problem& problem, const st
                                          const LinearOptions& options) {
   const auto t_start = Clock::now();
   const model::Model& m = *problem.model;
-  for (const VecX& f : loads)
-    if (f.size() != m.dof_count())
-      throw InvalidArgument("linear_statics: a load has " + std::to_string(f.size()) + " entries, the model " +
-                            std::to_string(m.dof_count()) + " DOFs");
+  require_load_sizes("linear_statics", loads, m.dof_count());
   const model::FreeMap map(model::free_dofs(problem), m.dof_count());
   const VecX x0 = model::initial_positions(problem);
   const VecX u_prescribed = x0 - m.rest_positions();
@@ -332,10 +334,7 @@ std::vector<StaticResult> static_equilibria(const model::Problem& problem, const
     return r;
   }
   const model::Model& m = *problem.model;
-  for (const VecX& f : loads)
-    if (f.size() != m.dof_count())
-      throw InvalidArgument("static_equilibria: a load has " + std::to_string(f.size()) + " entries, the model " +
-                            std::to_string(m.dof_count()) + " DOFs");
+  require_load_sizes("static_equilibria", loads, m.dof_count());
   if (options.start.size() > 0 && options.start.size() != m.dof_count())
     throw InvalidArgument("static_equilibrium: the initial guess has " + std::to_string(options.start.size()) +
                           " entries, the model " + std::to_string(m.dof_count()) + " DOFs");
