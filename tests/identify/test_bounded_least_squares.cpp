@@ -63,6 +63,26 @@ TEST(BoundedLeastSquares, EqualsExhaustiveSupportSearch) {
   }
 }
 
+// A target whose unconstrained least-squares solution is non-negative (a positive combination of the bases plus
+// noise): fit_nonnegative returns that solution (its shortcut: no subset is better) and the bounded solver agrees.
+TEST(BoundedLeastSquares, NonNegativeUnconstrainedSolutionIsTheFit) {
+  for (unsigned seed = 1; seed <= 10; ++seed) {
+    const MatX a = random_matrix(15, 6, seed);
+    const VecX x_true = random_vector(6, 200 + seed).cwiseAbs() + VecX::Constant(6, 0.5);
+    const VecX b = a * x_true + 1e-3 * random_vector(15, 300 + seed);
+    std::vector<MatX> bases;
+    for (int c = 0; c < a.cols(); ++c) bases.push_back(a.col(c));
+    double residual = -1.0;
+    const VecX fit = calibrate::fit_nonnegative(b, bases, &residual);
+    const VecX unconstrained = a.colPivHouseholderQr().solve(b);
+    ASSERT_TRUE((unconstrained.array() > 0.0).all()) << "seed " << seed;
+    EXPECT_LT((fit - unconstrained).norm(), 1e-8 * unconstrained.norm()) << "seed " << seed;
+    EXPECT_NEAR(residual, (a * fit - b).norm(), 1e-10 * b.norm());
+    const VecX x = solve_bounded_least_squares(DenseOperator(a), b, VecX::Zero(6));
+    EXPECT_LT((x - fit).norm(), 1e-7 * fit.norm()) << "seed " << seed;
+  }
+}
+
 // tests/data/identify/nnls_scipy.txt: A (40 x 30, sparse-ish, columns over 4 decades), b and scipy.optimize.nnls's
 // x, written by scripts/make_nnls_fixture.py with Debian's python3-scipy.
 TEST(BoundedLeastSquares, EqualsScipyNnls) {
