@@ -19,6 +19,7 @@ solve::StaticOptions statics(int load_steps = solve::StaticOptions{}.initial_loa
   solve::StaticOptions o;
   o.estimate_min_eigenvalue = false;
   o.newton.reuse_factorization = true;
+  o.newton.reuse_krylov_iterations = 20;
   o.initial_load_steps = load_steps;
   return o;
 }

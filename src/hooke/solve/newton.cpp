@@ -27,6 +27,7 @@ struct NewtonSolver::Impl {
   SparseCholesky cholesky;
   bool have_factor = false;  // `cholesky` holds a factorisation of an earlier Newton matrix of this objective
   double factor_seconds = 0.0;
+  int factor_count = 0;
   VecX grad, delta, trial, grad_trial;
   VecX cg_r, cg_z, cg_p, cg_q, cg_blocks;
   long cg_iterations = 0;             // during the current solve or direction
@@ -41,6 +42,7 @@ struct NewtonSolver::Impl {
   bool factorize(const SparseMatrix& h) {
     const auto t0 = Clock::now();
     const bool ok = cholesky.factorize(h);
+    ++factor_count;
     factor_seconds += std::chrono::duration<double>(Clock::now() - t0).count();
     return ok;
   }
@@ -139,6 +141,38 @@ struct NewtonSolver::Impl {
     return true;
   }
 
+  // Conjugate gradients on h x = -g preconditioned by the kept factorisation (of an earlier Newton matrix), from
+  // x = 0, to |residual| <= tolerance |g| within `limit` iterations. Returns false where they do not reach it or h
+  // shows a direction of non-positive curvature. Every iterate from 0 is a descent direction for a definite h.
+  bool factor_preconditioned_cg(const SparseMatrix& h, const VecX& g, double tolerance, int limit, VecX& x) {
+    const Eigen::Index nd = g.size();
+    for (VecX* w : {&cg_r, &cg_z, &cg_p, &cg_q})
+      if (w->size() != nd) w->setZero(nd);
+    x.setZero(nd);
+    cg_r = -g;
+    const double target = tolerance * g.norm();
+    cg_z = cg_r;
+    cholesky.solve_in_place(cg_z.data(), 1);
+    cg_p = cg_z;
+    double rz = cg_r.dot(cg_z);
+    for (int k = 0; k < limit; ++k) {
+      ++cg_iterations;
+      detail::multiply(h, cg_p, cg_q);
+      const double curvature = cg_p.dot(cg_q);
+      if (!(curvature > 0.0)) return false;
+      const double alpha = rz / curvature;
+      x += alpha * cg_p;
+      cg_r -= alpha * cg_q;
+      if (cg_r.norm() <= target) return true;
+      cg_z = cg_r;
+      cholesky.solve_in_place(cg_z.data(), 1);
+      const double rz_next = cg_r.dot(cg_z);
+      cg_p = cg_z + (rz_next / rz) * cg_p;
+      rz = rz_next;
+    }
+    return false;
+  }
+
   bool direction(NewtonObjective& f, const VecX& z, const VecX& g, double cg_tolerance, VecX& out) {
     if (cg()) {
       if (out.size() != g.size()) out.setZero(g.size());
@@ -199,9 +233,13 @@ struct NewtonSolver::Impl {
   // residual it was chosen at, and the objective at the iterate.
   double previous = 0.0, eta = 0.1, last_residual = 0.0, phi = 0.0;
 
+  // Set by step_direction: the last direction came from CG preconditioned by the kept factorisation.
+  bool preconditioned = false;
+
   // The direction of iteration `it` at y into `delta`; false when none could be computed. `reuse`: from the kept
   // factorisation (modified Newton) instead of a new one.
   bool step_direction(NewtonObjective& f, const VecX& y, int it, double residual, bool reuse) {
+    preconditioned = false;
     if (cg()) {
       // Inexact Newton (Eisenstat & Walker 1996, choice 2): the CG tolerance follows the residual's decrease, loose
       // far from the solution, down to cg_tolerance near it; tightened when the step is no descent.
@@ -215,6 +253,17 @@ struct NewtonSolver::Impl {
       delta = -grad;
       cholesky.solve_in_place(delta.data(), 1);
       return true;
+    }
+    if (have_factor && opt.reuse_factorization && opt.reuse_krylov_iterations > 0 && f.exact_hessian()) {
+      // Inexact Newton on the current matrix with the kept factor as preconditioner (forcing term as for cg).
+      eta = it > 0 && last_residual > 0.0
+                ? std::clamp(0.9 * (residual / last_residual) * (residual / last_residual), opt.cg_tolerance, 0.1)
+                : 0.1;
+      last_residual = residual;
+      if (factor_preconditioned_cg(f.newton_matrix(y, false), grad, eta, opt.reuse_krylov_iterations, delta)) {
+        preconditioned = true;
+        return true;
+      }
     }
     if (!direction(f, y, grad, 0.0, delta)) return false;
     have_factor = true;
@@ -275,9 +324,10 @@ struct NewtonSolver::Impl {
       // iteration; refactorise when it does not, when it gives no descent, or when its line search fails.
       const bool reuse = !cg() && opt.reuse_factorization && have_factor && r.residual <= 0.25 * previous;
       if (!step_direction(f, y, it, r.residual, reuse)) break;
-      previous = reuse ? r.residual : std::numeric_limits<double>::infinity();
+      const bool kept = reuse || preconditioned;  // the direction came from the kept factorisation
+      previous = kept ? r.residual : std::numeric_limits<double>::infinity();
       double slope = grad.dot(delta);
-      if (!(slope < 0.0) && reuse) {
+      if (!(slope < 0.0) && kept) {
         have_factor = false;
         continue;
       }
@@ -295,7 +345,7 @@ struct NewtonSolver::Impl {
       }
       if (line_search(f, y, slope, r.residual)) {
         y = trial;
-      } else if (reuse) {
+      } else if (kept) {
         have_factor = false;
       } else {
         break;
@@ -350,6 +400,7 @@ void NewtonSolver::invalidate() {
 const NewtonOptions& NewtonSolver::options() const { return m->opt; }
 long NewtonSolver::linear_iterations() const { return m->cg_iterations; }
 double NewtonSolver::factorization_seconds() const { return m->factor_seconds; }
+int NewtonSolver::factorizations() const { return m->factor_count; }
 std::string_view NewtonSolver::backend_name() const { return m->cg() ? "cg" : m->cholesky.backend_name(); }
 
 }  // namespace hooke::solve

@@ -135,6 +135,7 @@ struct LoadStepper {
     const auto t0 = Clock::now();
     const bool ok = stability_factor.factorize(objective.free_tangent(x, map));
     report->factorization_seconds += seconds_since(t0);
+    ++report->factorizations;
     return ok;
   }
 
@@ -222,6 +223,7 @@ std::vector<StaticResult> linear_statics(const model::Problem& problem, const st
     if (j == 0) {  // the shared assembly and factorisation count for the first load
       rep.assembly_seconds = assembly;
       rep.factorization_seconds = factorization;
+      rep.factorizations = 1;
     }
     result.positions = x0;
     if (!ok) {
@@ -259,6 +261,7 @@ StaticResult solve_load(LoadStepper& newton, const StaticOptions& options, bool 
   StaticResult result;
   SolveReport& rep = *newton.report;
   const double factorization_before = newton.newton.factorization_seconds();
+  const int factorizations_before = newton.newton.factorizations();
   const VecX& x_stable = newton.x_stable;
   const double& lambda_stable = newton.lambda_stable;
   const model::FreeMap& map = newton.map;
@@ -272,6 +275,7 @@ StaticResult solve_load(LoadStepper& newton, const StaticOptions& options, bool 
         (options.estimate_min_eigenvalue || status != SolveStatus::kConverged))
       rep.min_eigenvalue = smallest_eigenvalue(newton.objective.free_tangent(x_stable, map));
     rep.factorization_seconds += newton.newton.factorization_seconds() - factorization_before;
+    rep.factorizations += newton.newton.factorizations() - factorizations_before;
     result.positions = x_stable;
     rep.solve_seconds += seconds_since(t_start);
     result.report = std::move(rep);
@@ -359,6 +363,7 @@ std::vector<StaticResult> static_equilibria(const model::Problem& problem, const
         // positive definite exactly when the tangent on the free DOFs is, and modified Newton starts from it.
         start_stable = newton.newton.factorize_at(objective, x0);
         rep.factorization_seconds += seconds_since(t0);
+        ++rep.factorizations;
       } else {
         start_stable = newton.stable_at(x0);
       }

@@ -32,6 +32,7 @@ struct SolveReport {
   int free_dofs = 0;                     ///< number of unknowns
   double assembly_seconds = 0.0;         ///< time in Hessian and force assembly
   double factorization_seconds = 0.0;    ///< time in sparse factorisations
+  int factorizations = 0;                ///< sparse factorisations (Newton's and the stability tests')
   double solve_seconds = 0.0;            ///< total wall time
   std::string backend;                   ///< linear solver used ("cholmod", "eigen-ldlt")
   std::vector<double> residual_history;  ///< residual norm at each Newton iteration, N
