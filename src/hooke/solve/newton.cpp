@@ -233,6 +233,15 @@ struct NewtonSolver::Impl {
   // residual it was chosen at, and the objective at the iterate.
   double previous = 0.0, eta = 0.1, last_residual = 0.0, phi = 0.0;
 
+  // Inexact Newton's CG tolerance eta (Eisenstat & Walker 1996, choice 2) at iteration `it` with this residual:
+  // it follows the residual's decrease, loose far from the solution (0.1, also at it = 0), down to cg_tolerance
+  // near it.
+  void update_forcing_term(int it, double residual) {
+    if (it > 0 && last_residual > 0.0)
+      eta = std::clamp(0.9 * (residual / last_residual) * (residual / last_residual), opt.cg_tolerance, 0.1);
+    last_residual = residual;
+  }
+
   // Set by step_direction: the last direction came from CG preconditioned by the kept factorisation.
   bool preconditioned = false;
 
@@ -241,11 +250,7 @@ struct NewtonSolver::Impl {
   bool step_direction(NewtonObjective& f, const VecX& y, int it, double residual, bool reuse) {
     preconditioned = false;
     if (cg()) {
-      // Inexact Newton (Eisenstat & Walker 1996, choice 2): the CG tolerance follows the residual's decrease, loose
-      // far from the solution, down to cg_tolerance near it; tightened when the step is no descent.
-      if (it > 0)
-        eta = std::clamp(0.9 * (residual / last_residual) * (residual / last_residual), opt.cg_tolerance, 0.1);
-      last_residual = residual;
+      update_forcing_term(it, residual);  // tightened below when the step is no descent
       if (!direction(f, y, grad, eta, delta)) return false;
       return grad.dot(delta) < 0.0 || eta <= opt.cg_tolerance || direction(f, y, grad, opt.cg_tolerance, delta);
     }
@@ -255,11 +260,8 @@ struct NewtonSolver::Impl {
       return true;
     }
     if (have_factor && opt.reuse_factorization && opt.reuse_krylov_iterations > 0 && f.exact_hessian()) {
-      // Inexact Newton on the current matrix with the kept factor as preconditioner (forcing term as for cg).
-      eta = it > 0 && last_residual > 0.0
-                ? std::clamp(0.9 * (residual / last_residual) * (residual / last_residual), opt.cg_tolerance, 0.1)
-                : 0.1;
-      last_residual = residual;
+      // Inexact Newton on the current matrix with the kept factor as preconditioner.
+      update_forcing_term(it, residual);
       if (factor_preconditioned_cg(f.newton_matrix(y, false), grad, eta, opt.reuse_krylov_iterations, delta)) {
         preconditioned = true;
         return true;
