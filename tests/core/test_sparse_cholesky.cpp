@@ -2,6 +2,7 @@
 
 #include <support/matrices.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <hooke/core/sparse_cholesky.hpp>
 #include <hooke/mesh/generators.hpp>
@@ -36,6 +37,41 @@ SparseMatrix mesh_laplacian() {
   SparseMatrix a(m.node_count(), m.node_count());
   a.setFromTriplets(t.begin(), t.end());
   return a;
+}
+
+// A second factorisation of the same pattern takes CHOLMOD's ordering from the first, and its factor is the same
+// bits; the same size and nonzero count with other indices (the nodes renumbered) is a different pattern.
+TEST(SparseCholesky, SharesTheOrderingOfAPatternAndKeepsTheFactor) {
+  const mesh::Mesh m = mesh::tet_box(0.01, 0.01, 0.01, 5, 6, 7);
+  auto laplacian = [&m](const std::vector<int>& label) {
+    std::vector<Triplet> t;
+    for (const auto& [i, j] : mesh::unique_edges(m)) {
+      const int a = label[static_cast<size_t>(i)], b = label[static_cast<size_t>(j)];
+      t.insert(t.end(), {{a, a, 1.0}, {b, b, 1.0}, {a, b, -1.0}, {b, a, -1.0}});
+    }
+    for (int i = 0; i < m.node_count(); ++i) t.emplace_back(i, i, 0.1);
+    SparseMatrix a(m.node_count(), m.node_count());
+    a.setFromTriplets(t.begin(), t.end());
+    return a;
+  };
+  std::vector<int> identity(static_cast<size_t>(m.node_count()));
+  for (int i = 0; i < m.node_count(); ++i) identity[static_cast<size_t>(i)] = i;
+  std::vector<int> shuffled = identity;  // (reversing the numbering maps the box onto itself: the same pattern)
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(11));
+  const SparseMatrix a = laplacian(identity), renumbered = laplacian(shuffled);
+  ASSERT_EQ(a.nonZeros(), renumbered.nonZeros());
+  const VecX b = VecX::LinSpaced(a.rows(), -1.0, 1.0);
+  SparseCholesky first(CholeskyBackend::kCholmod), second(CholeskyBackend::kCholmod), other(CholeskyBackend::kCholmod);
+  ASSERT_TRUE(first.factorize(a));
+  EXPECT_FALSE(first.reused_ordering());
+  ASSERT_TRUE(second.factorize(a));
+  EXPECT_TRUE(second.reused_ordering());
+  const VecX x1 = first.solve(b), x2 = second.solve(b);
+  EXPECT_EQ(x1, x2);  // the same permutation and the same factor: identical bits
+  EXPECT_LT((a * x2 - b).norm(), 1e-12 * b.norm() * 1e3);
+  ASSERT_TRUE(other.factorize(renumbered));
+  EXPECT_FALSE(other.reused_ordering());
+  EXPECT_LT((renumbered * other.solve(b) - b).norm(), 1e-9 * b.norm());
 }
 
 // solve_in_place: 1-3 interleaved right-hand sides, on a 3D mesh Laplacian whose CHOLMOD factor has real

@@ -1,6 +1,7 @@
 #pragma once
 /// Sparse symmetric positive-definite factorisation: CHOLMOD supernodal (SuiteSparse) or Eigen's
-/// SimplicialLDLT as a fallback. The symbolic analysis is kept and reused while the pattern is unchanged.
+/// SimplicialLDLT as a fallback. The symbolic analysis is kept and reused while the pattern is unchanged, and
+/// CHOLMOD's fill-reducing ordering is shared between factorisations of the same pattern.
 #include <hooke/core/types.hpp>
 #include <memory>
 #include <string_view>
@@ -8,7 +9,7 @@
 namespace hooke {
 
 enum class CholeskyBackend {
-  kAuto,     ///< Eigen below 5 000 unknowns (no threaded-BLAS overhead), CHOLMOD from there on
+  kAuto,     ///< Eigen below 1 000 unknowns (no threaded-BLAS overhead), CHOLMOD from there on
   kCholmod,  ///< CHOLMOD supernodal LL^T
   kEigen     ///< Eigen::SimplicialLDLT (fine below ~5 000 DOFs)
 };
@@ -43,6 +44,9 @@ class SparseCholesky {
   /// of the factor, made at each factorisation (see SolvePrecision): for preconditioners such as quasi-Newton's
   /// initial Hessian, never for a solution. solve() and the Eigen backend stay in double precision.
   void set_solve_precision(SolvePrecision precision);
+  /// True when the last symbolic analysis took its fill-reducing ordering from an earlier analysis of the same
+  /// pattern in this process (CHOLMOD backend; a few recent patterns are kept) instead of computing it again.
+  bool reused_ordering() const;
   /// "cholmod" or "eigen-ldlt".
   std::string_view backend_name() const;
 
