@@ -429,7 +429,10 @@ bool SparseCholesky::factorize(const SparseMatrix& a) {
     s.ok = s.cholmod.info() == Eigen::Success;
     if (s.ok && s.precision != SolvePrecision::kDouble) s.copy_factor();
   } else {
-    if (!same_pattern) s.ldlt.analyzePattern(a);
+    if (!same_pattern) {
+      s.ldlt.analyzePattern(a);
+      s.reused_ordering = false;  // Eigen's ordering is never shared
+    }
     s.ldlt.factorize(a);
     // LDL^T succeeds on indefinite matrices; positive definiteness needs every pivot positive.
     s.ok = s.ldlt.info() == Eigen::Success && (s.ldlt.vectorD().array() > 0.0).all();
