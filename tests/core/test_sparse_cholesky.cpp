@@ -100,7 +100,8 @@ TEST(SparseCholesky, SolveInPlaceMatchesTheResidualForSeveralRightHandSides) {
 }
 
 // The single-precision solve (quasi-Newton's initial Hessian): a float copy of the supernodal factor, refreshed at
-// every factorisation; about 1e-7 relative error, not double's 1e-15; solve() stays in double.
+// every factorisation; about 1e-7 relative error, not double's 1e-15; solve() and solve_exact_in_place() stay in
+// double.
 TEST(SparseCholesky, SinglePrecisionSolveIsAFloatCopyOfTheFactor) {
   const SparseMatrix a = mesh_laplacian();
   SparseCholesky exact(CholeskyBackend::kCholmod), single(CholeskyBackend::kCholmod);
@@ -117,6 +118,9 @@ TEST(SparseCholesky, SinglePrecisionSolveIsAFloatCopyOfTheFactor) {
     EXPECT_GT(error, 1e-12) << "the float path did not run";
     EXPECT_LT(error, 1e-5);
     EXPECT_LT((single.solve(b) - xd).norm(), 1e-12 * xd.norm());  // solve() is double
+    VecX xe = b;
+    single.solve_exact_in_place(xe.data(), 1);
+    EXPECT_EQ(xe, xd);  // the same double kernel on the same factor
     for (Eigen::Index i = 0; i < a.rows(); ++i) x3.segment<3>(3 * i).setConstant(b(i));
     single.solve_in_place(x3.data(), 3);
     for (int r = 0; r < 3; ++r)

@@ -325,18 +325,19 @@ struct SparseCholesky::Impl {
   mutable std::vector<float> single_work, single_rows;
   size_t max_super_rows = 0;  // the most rows of any supernode (diagonal block included), at copy_factor()
 
-  void cholmod_solve_in_place(double* b, int nrhs) const {
+  // @pre `use` is kDouble or the precision whose copy copy_factor() made
+  void cholmod_solve_in_place(double* b, int nrhs, SolvePrecision use) const {
     const cholmod_factor& l = *cholmod.factor();
     if (!l.is_super) throw SolverFailure("SparseCholesky: CHOLMOD returned a simplicial factor");
     const auto work = 3 * static_cast<size_t>(l.n), rows_work = static_cast<size_t>(l.maxesize) + 1;
-    if (precision != SolvePrecision::kDouble) {
+    if (use != SolvePrecision::kDouble) {
       if (single_work.size() != work || single_rows.size() < 3 * max_super_rows) {
         single_work.resize(work);
         single_rows.resize(std::max(rows_work, 3 * max_super_rows));
       }
       float* w = single_work.data();
       float* t = single_rows.data();
-      if (precision == SolvePrecision::kSingle) {
+      if (use == SolvePrecision::kSingle) {
         supernodal_solve(l, single_x.data(), b, w, t, nrhs);
       } else if (nrhs == 1) {
         supernodal_solve_bfloat16<1>(l, brain_x.data(), b, w, t);
@@ -450,11 +451,17 @@ VecX SparseCholesky::solve(const VecX& b) const {
   return m_impl->ldlt.solve(b);
 }
 
-void SparseCholesky::solve_in_place(double* b, int nrhs) const {
+void SparseCholesky::solve_in_place(double* b, int nrhs) const { solve_in_place(b, nrhs, m_impl->precision); }
+
+void SparseCholesky::solve_exact_in_place(double* b, int nrhs) const {
+  solve_in_place(b, nrhs, SolvePrecision::kDouble);
+}
+
+void SparseCholesky::solve_in_place(double* b, int nrhs, SolvePrecision precision) const {
   if (!m_impl->ok) throw SolverFailure("SparseCholesky::solve_in_place called without a successful factorisation");
   if (nrhs < 1 || nrhs > 3) throw InvalidArgument("SparseCholesky::solve_in_place: 1, 2 or 3 right-hand sides");
   if (m_impl->backend == CholeskyBackend::kCholmod) {
-    m_impl->cholmod_solve_in_place(b, nrhs);
+    m_impl->cholmod_solve_in_place(b, nrhs, precision);
     return;
   }
   if (!m_impl->extracted) m_impl->extract();

@@ -40,9 +40,13 @@ class SparseCholesky {
   /// solves on CHOLMOD's supernodal factor, or on a copy of Eigen's factor made at the first call after a
   /// factorisation. Allocates nothing after the first call. @pre factorize() returned true
   void solve_in_place(double* b, int nrhs) const;
+  /// As solve_in_place, always on the double-precision factor whatever set_solve_precision chose: the solution
+  /// beside preconditioner solves on the same factor. Allocates nothing after the first call.
+  void solve_exact_in_place(double* b, int nrhs) const;
   /// The precision of solve_in_place on the CHOLMOD backend: below kDouble it solves on a reduced-precision copy
   /// of the factor, made at each factorisation (see SolvePrecision): for preconditioners such as quasi-Newton's
-  /// initial Hessian, never for a solution. solve() and the Eigen backend stay in double precision.
+  /// initial Hessian or Newton's kept-factor CG, never for a solution. solve(), solve_exact_in_place() and the
+  /// Eigen backend stay in double precision.
   void set_solve_precision(SolvePrecision precision);
   /// True when the last symbolic analysis took its fill-reducing ordering from an earlier analysis of the same
   /// pattern in this process (CHOLMOD backend; a few recent patterns are kept) instead of computing it again.
@@ -51,6 +55,8 @@ class SparseCholesky {
   std::string_view backend_name() const;
 
  private:
+  void solve_in_place(double* b, int nrhs, SolvePrecision precision) const;
+
   struct Impl;
   std::unique_ptr<Impl> m_impl;
 };

@@ -21,20 +21,28 @@ struct FreeMap {
     for (int i = 0; i < size(); ++i) r(i) = full(free[static_cast<size_t>(i)]);
     return r;
   }
-  /// The free rows and columns of `full` (dof_count square).
+  /// The free rows and columns of `full` (dof_count square), its stored entries kept as they are. One pass, no
+  /// triplets: free indices increase with full ones, so each kept column's rows stay sorted (the triplet build took
+  /// 0.8 s on a scan's 9 M entries).
   SparseMatrix restrict(const SparseMatrix& full) const {
-    std::vector<Triplet> t;
-    t.reserve(static_cast<size_t>(full.nonZeros()));
-    for (int col = 0; col < full.outerSize(); ++col) {
-      const int fc = to_free[static_cast<size_t>(col)];
-      if (fc < 0) continue;
-      for (SparseMatrix::InnerIterator it(full, col); it; ++it) {
-        const int fr = to_free[static_cast<size_t>(it.row())];
-        if (fr >= 0) t.emplace_back(fr, fc, it.value());
-      }
-    }
     SparseMatrix r(size(), size());
-    r.setFromTriplets(t.begin(), t.end());
+    Eigen::Index nnz = 0;
+    for (const int col : free)
+      for (SparseMatrix::InnerIterator it(full, col); it; ++it) nnz += to_free[static_cast<size_t>(it.row())] >= 0;
+    r.resizeNonZeros(nnz);
+    int* outer = r.outerIndexPtr();
+    int* inner = r.innerIndexPtr();
+    double* value = r.valuePtr();
+    int k = 0;
+    for (int fc = 0; fc < size(); ++fc) {
+      outer[fc] = k;
+      for (SparseMatrix::InnerIterator it(full, free[static_cast<size_t>(fc)]); it; ++it)
+        if (const int fr = to_free[static_cast<size_t>(it.row())]; fr >= 0) {
+          inner[k] = fr;
+          value[k++] = it.value();
+        }
+    }
+    outer[size()] = k;
     return r;
   }
 };

@@ -46,7 +46,8 @@ struct NewtonOptions {
   /// kept factor (inexact Newton, the forcing term as for cg), with at most this many iterations, and refactorise
   /// only when they do not reach it or meet non-positive curvature. A local change of the tangent (a few stiffening
   /// elements) is a low-rank change of the factorised matrix, which such CG resolves in a few solves, each about
-  /// 1/25 of a factorisation on a 200 000-DOF tet model. 0 (default): refactorise at once
+  /// 1/25 of a factorisation on a 200 000-DOF tet model (on a float copy of the factor, which a positive value
+  /// keeps beside it: 1.5x the factor's memory, 0.6x its solve time). 0 (default): refactorise at once
   int reuse_krylov_iterations = 0;
   /// where the objective's Hessian is approximate: refine each step by GMRES on forward differences of the
   /// gradient (cholesky only; allocates), default true
