@@ -37,23 +37,26 @@ Mat3 cross_matrix(const Vec3& v) {
   return m;
 }
 
-// d2V/dx2 (12 x 12). With edges e_k = p_{k+1} - p_1, V = e1 . (e2 x e3) / 6 is trilinear, and
-// d2V/de2 de1 = [e3]x / 6, d2V/de3 de2 = [e1]x / 6, d2V/de1 de3 = [e2]x / 6 (transposes above the diagonal).
+// d2V/dx2 (12 x 12). With edges e_k = p_k - p_0 (k = 1, 2, 3), V = e1 . (e2 x e3) / 6 is trilinear, and
+// d2V/de2 de1 = [e3]x / 6, d2V/de3 de2 = [e1]x / 6, d2V/de1 de3 = [e2]x / 6 (their transposes, -[.]x, above the
+// diagonal; zero diagonal blocks). With p_0 = -(sum of the edges' derivatives), the corner blocks are cross matrices
+// too: d2V/dp0 dp1 = [e2 - e3]x / 6, dp0 dp2 = [e3 - e1]x / 6, dp0 dp3 = [e1 - e2]x / 6, dp0 dp0 = 0. Written
+// block by block (the product S^T H_e S with the 9 x 12 edge map S took most of an assembly: 0.37 s on 345 000 tets).
 Mat12 volume_hessian(const Mat34& p) {
   const Vec3 e1 = p.col(1) - p.col(0), e2 = p.col(2) - p.col(0), e3 = p.col(3) - p.col(0);
-  Eigen::Matrix<double, 9, 9> he = Eigen::Matrix<double, 9, 9>::Zero();
-  he.block<3, 3>(3, 0) = cross_matrix(e3) / 6.0;
-  he.block<3, 3>(6, 3) = cross_matrix(e1) / 6.0;
-  he.block<3, 3>(0, 6) = cross_matrix(e2) / 6.0;
-  he.block<3, 3>(0, 3) = he.block<3, 3>(3, 0).transpose();
-  he.block<3, 3>(3, 6) = he.block<3, 3>(6, 3).transpose();
-  he.block<3, 3>(6, 0) = he.block<3, 3>(0, 6).transpose();
-  Eigen::Matrix<double, 9, 12> s = Eigen::Matrix<double, 9, 12>::Zero();  // e = S x
-  for (int k = 0; k < 3; ++k) {
-    s.block<3, 3>(3 * k, 0) = -Mat3::Identity();
-    s.block<3, 3>(3 * k, 3 * (k + 1)) = Mat3::Identity();
-  }
-  return s.transpose() * he * s;
+  Mat12 h = Mat12::Zero();
+  auto pair = [&](int a, int b, const Vec3& w) {  // block (a, b) = [w]x / 6, block (b, a) its transpose
+    const Mat3 m = cross_matrix(w / 6.0);
+    h.block<3, 3>(3 * a, 3 * b) = m;
+    h.block<3, 3>(3 * b, 3 * a) = -m;
+  };
+  pair(2, 1, e3);
+  pair(3, 2, e1);
+  pair(1, 3, e2);
+  pair(0, 1, e2 - e3);
+  pair(0, 2, e3 - e1);
+  pair(0, 3, e1 - e2);
+  return h;
 }
 
 }  // namespace
