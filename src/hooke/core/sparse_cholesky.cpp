@@ -2,10 +2,12 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
+#include <omp.h>
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <hooke/core/detail/supernode_split.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/sparse_cholesky.hpp>
 #include <list>
@@ -47,8 +49,14 @@ struct Supernodes {
 // (2.7 ms); 34 275 DOFs 20 ms (30 ms). S is the factor's scalar: double (CHOLMOD's own values, lx = l.x) or float
 // (a copy, half the memory traffic: 3 267 DOFs 0.25 ms against 0.40 ms in one run, 34 275 DOFs 13.8 against
 // 22.2 ms). w: n x R work, column-major; t: max rows work.
+//
+// With a split (detail::SupernodeSplit, factors from 4 M entries), the two groups of independent subtrees run on two
+// threads: in L y = P b the second group's updates of the top's rows go to its own buffer w2 (n x R, added after
+// both), and in L^T z = y both groups only read the top's rows, solved first. The order of every operation is fixed
+// by the split, not by the number of threads. t2: the second thread's max rows work.
 template <class S>
-void supernodal_solve(const cholmod_factor& l, const S* lx, double* b, S* w, S* t, int nrhs) {
+void supernodal_solve(const cholmod_factor& l, const S* lx, double* b, S* w, S* t, int nrhs,
+                      const detail::SupernodeSplit* split = nullptr, S* w2 = nullptr, S* t2 = nullptr) {
   using Block = Eigen::Map<const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>, 0, Eigen::OuterStride<>>;
   using Vector = Eigen::Map<Eigen::Matrix<S, Eigen::Dynamic, 1>>;
   const Supernodes f(l);
@@ -62,25 +70,60 @@ void supernodal_solve(const cholmod_factor& l, const S* lx, double* b, S* w, S* 
     const int k1 = super[s], nsc = super[s + 1] - k1, nsrow = pi[s + 1] - pi[s], below = nsrow - nsc;
     const Block l11(lx + px[s], nsc, nsc, Eigen::OuterStride<>(nsrow));
     const Block l21(lx + px[s] + nsc, below, nsc, Eigen::OuterStride<>(nsrow));
-    for (int r = 0; r < nrhs; ++r) body(w + r * n, k1, nsc, below, rows + pi[s] + nsc, l11, l21);
+    for (int r = 0; r < nrhs; ++r) body(r, k1, nsc, below, rows + pi[s] + nsc, l11, l21);
   };
-  for (int s = 0; s < nsuper; ++s)  // L y = P b
-    blocks(s, [&](S* wr, int k1, int nsc, int below, const int* srows, const Block& l11, const Block& l21) {
+  // L y = P b at supernode s; rows from `bound` on are updated in `spill` instead of w (null: none).
+  auto forward = [&](int s, S* tw, int bound, S* spill) {
+    blocks(s, [&](int r, int k1, int nsc, int below, const int* srows, const Block& l11, const Block& l21) {
+      S* wr = w + r * n;
       Vector y(wr + k1, nsc);
       l11.template triangularView<Eigen::Lower>().solveInPlace(y);
       if (below == 0) return;
-      Vector(t, below).noalias() = l21 * y;
-      for (int i = 0; i < below; ++i) wr[srows[i]] -= t[i];
+      Vector(tw, below).noalias() = l21 * y;
+      const int inside = spill ? static_cast<int>(std::lower_bound(srows, srows + below, bound) - srows) : below;
+      for (int i = 0; i < inside; ++i) wr[srows[i]] -= tw[i];
+      for (int i = inside; i < below; ++i) spill[r * n + srows[i]] += tw[i];
     });
-  for (int s = nsuper - 1; s >= 0; --s)  // L^T z = y
-    blocks(s, [&](S* wr, int k1, int nsc, int below, const int* srows, const Block& l11, const Block& l21) {
+  };
+  auto backward = [&](int s, S* tw) {  // L^T z = y at supernode s
+    blocks(s, [&](int r, int k1, int nsc, int below, const int* srows, const Block& l11, const Block& l21) {
+      S* wr = w + r * n;
       Vector y(wr + k1, nsc);
       if (below > 0) {
-        for (int i = 0; i < below; ++i) t[i] = wr[srows[i]];
-        y.noalias() -= l21.transpose() * Vector(t, below);
+        for (int i = 0; i < below; ++i) tw[i] = wr[srows[i]];
+        y.noalias() -= l21.transpose() * Vector(tw, below);
       }
       l11.transpose().template triangularView<Eigen::Upper>().solveInPlace(y);
     });
+  };
+  if (split == nullptr || !split->parallel()) {
+    for (int s = 0; s < nsuper; ++s) forward(s, t, 0, nullptr);
+    for (int s = nsuper - 1; s >= 0; --s) backward(s, t);
+  } else {
+    for (int r = 0; r < nrhs; ++r)
+      for (int k : split->top_columns) w2[r * n + k] = S(0);
+    const int threads_wanted = std::min(2, omp_get_max_threads());  // OMP_NUM_THREADS=1: one thread, same bits
+#pragma omp parallel num_threads(threads_wanted)
+    {
+      const int id = omp_get_thread_num(), threads = omp_get_num_threads();
+      for (int g = id; g < 2; g += threads)
+        for (const auto& [first, last] : split->ranges[static_cast<size_t>(g)])
+          for (int s = first; s <= last; ++s)
+            forward(s, g == 0 ? t : t2, g == 0 ? 0 : super[last + 1], g == 0 ? nullptr : w2);
+    }
+    for (int r = 0; r < nrhs; ++r)
+      for (int k : split->top_columns) w[r * n + k] -= w2[r * n + k];
+    for (int s : split->top) forward(s, t, 0, nullptr);
+    for (auto it = split->top.rbegin(); it != split->top.rend(); ++it) backward(*it, t);
+#pragma omp parallel num_threads(threads_wanted)
+    {
+      const int id = omp_get_thread_num(), threads = omp_get_num_threads();
+      for (int g = id; g < 2; g += threads)
+        for (auto range = split->ranges[static_cast<size_t>(g)].rbegin();
+             range != split->ranges[static_cast<size_t>(g)].rend(); ++range)
+          for (int s = (*range)[1]; s >= (*range)[0]; --s) backward(s, g == 0 ? t : t2);
+    }
+  }
   for (int r = 0; r < nrhs; ++r)
     for (int k = 0; k < n; ++k) b[nrhs * perm[k] + r] = w[r * n + k];
 }
@@ -323,7 +366,22 @@ struct SparseCholesky::Impl {
   std::vector<float> single_x;                         // kSingle's copy of the factor, made at factorize()
   std::vector<std::uint16_t> brain_x;                  // kBfloat16's copy
   mutable std::vector<float> single_work, single_rows;
-  size_t max_super_rows = 0;  // the most rows of any supernode (diagonal block included), at copy_factor()
+  size_t max_super_rows = 0;            // the most rows of any supernode (diagonal block included), at copy_factor()
+  detail::SupernodeSplit split;         // of the analysed factor's tree, for two-thread solves (empty: serial)
+  mutable VecX split_work, split_rows;  // the second group's buffer and rows work (double)
+  mutable std::vector<float> single_split_work, single_split_rows;  // (float)
+
+  // Factors from this many entries solve on two threads where the tree splits evenly (the bunny's model, 7.5e7
+  // entries; the 11 425-node benchmark cylinder, 1.9e7), smaller ones on one (a parallel region costs ~10 us).
+  static constexpr long long kSplitEntries = 4'000'000;
+
+  void split_tree() {
+    const cholmod_factor& l = *cholmod.factor();
+    split = l.is_super
+                ? detail::split_supernodes(static_cast<int>(l.nsuper), static_cast<const int*>(l.super),
+                                           static_cast<const int*>(l.pi), static_cast<const int*>(l.s), kSplitEntries)
+                : detail::SupernodeSplit{};
+  }
 
   // @pre `use` is kDouble or the precision whose copy copy_factor() made
   void cholmod_solve_in_place(double* b, int nrhs, SolvePrecision use) const {
@@ -338,7 +396,11 @@ struct SparseCholesky::Impl {
       float* w = single_work.data();
       float* t = single_rows.data();
       if (use == SolvePrecision::kSingle) {
-        supernodal_solve(l, single_x.data(), b, w, t, nrhs);
+        if (split.parallel() && single_split_work.size() != work) {
+          single_split_work.resize(work);
+          single_split_rows.resize(rows_work);
+        }
+        supernodal_solve(l, single_x.data(), b, w, t, nrhs, &split, single_split_work.data(), single_split_rows.data());
       } else if (nrhs == 1) {
         supernodal_solve_bfloat16<1>(l, brain_x.data(), b, w, t);
       } else if (nrhs == 2) {
@@ -352,7 +414,12 @@ struct SparseCholesky::Impl {
       supernodal_work.resize(static_cast<Eigen::Index>(work));
       supernodal_rows.resize(static_cast<Eigen::Index>(rows_work));
     }
-    supernodal_solve(l, static_cast<const double*>(l.x), b, supernodal_work.data(), supernodal_rows.data(), nrhs);
+    if (split.parallel() && split_work.size() != static_cast<Eigen::Index>(work)) {
+      split_work.resize(static_cast<Eigen::Index>(work));
+      split_rows.resize(static_cast<Eigen::Index>(rows_work));
+    }
+    supernodal_solve(l, static_cast<const double*>(l.x), b, supernodal_work.data(), supernodal_rows.data(), nrhs,
+                     &split, split_work.data(), split_rows.data());
   }
 
   // The reduced-precision copy of CHOLMOD's supernodal factor values that `precision` asks for; frees the other.
@@ -425,7 +492,10 @@ bool SparseCholesky::factorize(const SparseMatrix& a) {
   if (!same_pattern && s.requested == CholeskyBackend::kAuto)
     s.backend = a.rows() < kSmallSystem ? CholeskyBackend::kEigen : CholeskyBackend::kCholmod;
   if (s.backend == CholeskyBackend::kCholmod) {
-    if (!same_pattern) s.reused_ordering = s.cholmod.analyze_pattern(a);
+    if (!same_pattern) {
+      s.reused_ordering = s.cholmod.analyze_pattern(a);
+      s.split_tree();
+    }
     s.cholmod.factorize(a);
     s.ok = s.cholmod.info() == Eigen::Success;
     if (s.ok && s.precision != SolvePrecision::kDouble) s.copy_factor();
@@ -476,6 +546,10 @@ void SparseCholesky::solve_in_place(double* b, int nrhs, SolvePrecision precisio
 void SparseCholesky::set_solve_precision(SolvePrecision precision) {
   m_impl->precision = precision;
   if (m_impl->ok && m_impl->backend == CholeskyBackend::kCholmod) m_impl->copy_factor();
+}
+
+bool SparseCholesky::parallel_solve() const {
+  return m_impl->backend == CholeskyBackend::kCholmod && m_impl->split.parallel();
 }
 
 bool SparseCholesky::reused_ordering() const { return m_impl->reused_ordering; }

@@ -36,9 +36,10 @@ class SparseCholesky {
   /// Solves A x = b with the last successful factorisation. @pre factorize() returned true
   VecX solve(const VecX& b) const;
   /// Solves A X = B in place for `nrhs` (1, 2 or 3) right-hand sides stored interleaved, b[nrhs i + r] (a
-  /// row-major n x nrhs array: flat node-major positions when A is a per-node matrix). Single-threaded triangular
-  /// solves on CHOLMOD's supernodal factor, or on a copy of Eigen's factor made at the first call after a
-  /// factorisation. Allocates nothing after the first call. @pre factorize() returned true
+  /// row-major n x nrhs array: flat node-major positions when A is a per-node matrix). Triangular solves on
+  /// CHOLMOD's supernodal factor (on two threads where parallel_solve(); the bfloat16 copy on one), or on a copy of
+  /// Eigen's factor made at the first call after a factorisation. Allocates nothing after the first call.
+  /// @pre factorize() returned true
   void solve_in_place(double* b, int nrhs) const;
   /// As solve_in_place, always on the double-precision factor whatever set_solve_precision chose: the solution
   /// beside preconditioner solves on the same factor. Allocates nothing after the first call.
@@ -51,6 +52,10 @@ class SparseCholesky {
   /// True when the last symbolic analysis took its fill-reducing ordering from an earlier analysis of the same
   /// pattern in this process (CHOLMOD backend; a few recent patterns are kept) instead of computing it again.
   bool reused_ordering() const;
+  /// True when solve_in_place and solve_exact_in_place run on two threads: a CHOLMOD factor of 4 M entries or more
+  /// whose elimination tree splits into two even groups of subtrees (detail/supernode_split.hpp). The result does
+  /// not depend on the number of threads.
+  bool parallel_solve() const;
   /// "cholmod" or "eigen-ldlt".
   std::string_view backend_name() const;
 
