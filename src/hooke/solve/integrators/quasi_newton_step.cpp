@@ -27,6 +27,9 @@ namespace {
 // costs c x DOFs per solve.
 constexpr int kMaxCorrectedDofs = 96;
 
+// A direction this small relative to the body's size is round-off: Newton's own step test.
+const double kRoundOffStep = NewtonOptions{}.step_tolerance;
+
 class QuasiNewtonStep final : public IntegratorStep {
  public:
   QuasiNewtonStep(SimulationState& s, const SimulatorOptions& options)
@@ -72,9 +75,10 @@ class QuasiNewtonStep final : public IntegratorStep {
     const bool conservative = m_objective.conservative();
     int it = 0;
     // An overflowing load (a force of 1e300 N) makes the scale infinite, and every residual would pass the test.
+    bool at_round_off = false;
     const auto done = [&] {
-      return std::isfinite(residual) && std::isfinite(m_objective.force_scale()) &&
-             residual <= m_opt.tolerance * m_objective.force_scale();
+      return at_round_off || (std::isfinite(residual) && std::isfinite(m_objective.force_scale()) &&
+                              residual <= m_opt.tolerance * m_objective.force_scale());
     };
     for (; it < m_opt.max_iterations; ++it) {
       if (done() || !std::isfinite(residual * m_objective.force_scale())) break;
@@ -85,6 +89,13 @@ class QuasiNewtonStep final : public IntegratorStep {
         two_loop();
         slope = m_grad.dot(m_dir);
         if (!(slope < 0.0)) break;
+      }
+      // Newton's round-off test (NewtonOptions::step_tolerance): a direction below 1e-13 of the body's size has
+      // nothing more to gain. A body at rest with no load starts there: its gradient is round-off, which no
+      // tolerance relative to that same gradient can be met by.
+      if (m_dir.cwiseAbs().maxCoeff() <= kRoundOffStep * m_objective.size()) {
+        at_round_off = true;
+        break;
       }
       // Backtracking from the full step: Armijo on phi, or a smaller residual where the forces have no potential.
       double alpha = 1.0, phi_trial = phi;
