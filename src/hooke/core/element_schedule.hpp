@@ -12,8 +12,9 @@ namespace hooke {
 /// the chunks of one parity touch pairwise disjoint node sets (checked; P shrinks until it holds, P = 1 is
 /// serial). Phase 0 runs the even chunks in parallel (OpenMP), then phase 1 the odd ones, so a block may scatter
 /// into per-node arrays without locks or per-thread copies. With nodes in a banded order (reverse
-/// Cuthill-McKee, mesh/reorder.hpp) P stays large. The visiting order, and so the rounding of every sum, depends
-/// on the mesh only, not on the number of threads.
+/// Cuthill-McKee, mesh/reorder.hpp) P stays large; where the node order leaves no valid split (a tetrahedraliser's
+/// numbering: surface nodes first), elements are sorted by breadth-first node ranks instead. The visiting order, and
+/// so the rounding of every sum, depends on the mesh only, not on the number of threads.
 class ElementSchedule {
  public:
   /// Maximum number of chunks.
