@@ -102,27 +102,25 @@ void supernodal_solve(const cholmod_factor& l, const S* lx, double* b, S* w, S* 
   } else {
     for (int r = 0; r < nrhs; ++r)
       for (int k : split->top_columns) w2[r * n + k] = S(0);
-    const int threads_wanted = std::min(2, omp_get_max_threads());  // OMP_NUM_THREADS=1: one thread, same bits
+    // Group g's work on thread g (both on one where OMP_NUM_THREADS=1: the same operations, the same bits).
+    const int threads_wanted = std::min(2, omp_get_max_threads());
+    auto on_groups = [&](auto&& group) {
 #pragma omp parallel num_threads(threads_wanted)
-    {
-      const int id = omp_get_thread_num(), threads = omp_get_num_threads();
-      for (int g = id; g < 2; g += threads)
-        for (const auto& [first, last] : split->ranges[static_cast<size_t>(g)])
-          for (int s = first; s <= last; ++s)
-            forward(s, g == 0 ? t : t2, g == 0 ? 0 : super[last + 1], g == 0 ? nullptr : w2);
-    }
+      for (int g = omp_get_thread_num(); g < 2; g += omp_get_num_threads()) group(static_cast<size_t>(g));
+    };
+    on_groups([&](size_t g) {
+      for (const auto& [first, last] : split->ranges[g])
+        for (int s = first; s <= last; ++s)
+          forward(s, g == 0 ? t : t2, g == 0 ? 0 : super[last + 1], g == 0 ? nullptr : w2);
+    });
     for (int r = 0; r < nrhs; ++r)
       for (int k : split->top_columns) w[r * n + k] -= w2[r * n + k];
     for (int s : split->top) forward(s, t, 0, nullptr);
     for (auto it = split->top.rbegin(); it != split->top.rend(); ++it) backward(*it, t);
-#pragma omp parallel num_threads(threads_wanted)
-    {
-      const int id = omp_get_thread_num(), threads = omp_get_num_threads();
-      for (int g = id; g < 2; g += threads)
-        for (auto range = split->ranges[static_cast<size_t>(g)].rbegin();
-             range != split->ranges[static_cast<size_t>(g)].rend(); ++range)
-          for (int s = (*range)[1]; s >= (*range)[0]; --s) backward(s, g == 0 ? t : t2);
-    }
+    on_groups([&](size_t g) {
+      for (auto range = split->ranges[g].rbegin(); range != split->ranges[g].rend(); ++range)
+        for (int s = (*range)[1]; s >= (*range)[0]; --s) backward(s, g == 0 ? t : t2);
+    });
   }
   for (int r = 0; r < nrhs; ++r)
     for (int k = 0; k < n; ++k) b[nrhs * perm[k] + r] = w[r * n + k];

@@ -52,7 +52,6 @@ HessianAssembly::HessianAssembly(int dim, int dof_count, std::vector<const TermB
         for (Eigen::Index a = 0; a < el.cols(); ++a) adj[static_cast<size_t>(next[col]++)] = el(e, a);
       }
   next = {};
-  adj_start[0] = 0;
   size_t kept = 0;
   for (int i = 0; i < nodes; ++i) {
     const auto first = adj.begin() + fill_at[static_cast<size_t>(i)];
@@ -60,7 +59,8 @@ HessianAssembly::HessianAssembly(int dim, int dof_count, std::vector<const TermB
     std::sort(first, last);
     const auto end = std::unique(first, last);
     const auto count = static_cast<size_t>(end - first);
-    std::copy(first, end, adj.begin() + static_cast<std::ptrdiff_t>(kept));  // kept <= fill_at[i]: no overlap ahead
+    if (static_cast<std::int64_t>(kept) < fill_at[static_cast<size_t>(i)])  // moved down, never onto itself
+      std::copy(first, end, adj.begin() + static_cast<std::ptrdiff_t>(kept));
     kept += count;
     adj_start[static_cast<size_t>(i) + 1] = static_cast<int>(kept);
   }

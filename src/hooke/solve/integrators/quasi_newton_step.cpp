@@ -74,8 +74,8 @@ class QuasiNewtonStep final : public IntegratorStep {
     double residual = m_grad.norm();
     const bool conservative = m_objective.conservative();
     int it = 0;
+    bool at_round_off = false;  // set by the round-off step test below
     // An overflowing load (a force of 1e300 N) makes the scale infinite, and every residual would pass the test.
-    bool at_round_off = false;
     const auto done = [&] {
       return at_round_off || (std::isfinite(residual) && std::isfinite(m_objective.force_scale()) &&
                               residual <= m_opt.tolerance * m_objective.force_scale());
