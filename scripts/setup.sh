@@ -4,7 +4,8 @@
 #   (default)  build, test and report dependencies, and the viewer's (GLFW, Dear ImGui, stb, Xvfb)
 #              and Dask distributed with pandas (hooke batch, studies beyond one machine)
 #              and the real scanned surfaces the meshing tests use (CGAL's sample data in libcgal-demo, not linked)
-#   --meshing  also gmsh and tetgen, needed only to regenerate the committed meshes in data/meshes
+#              and TetGen's program, run on files by --mesher tetgen (AGPL-3, never linked)
+#   --meshing  also gmsh, needed only to regenerate the committed meshes in data/meshes
 #   --bench    also Bullet, a benchmark peer of bench/ (the other, VegaFEM, needs only g++: scripts/build_vegafem.sh)
 set -euo pipefail
 
@@ -16,12 +17,12 @@ core=(
   python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib python3-meshio pybind11-dev
   python3-distributed python3-pandas
   libglfw3-dev libimgui-dev libstb-dev xvfb xauth
-  libcgal-demo
+  libcgal-demo tetgen
 )
 extra=()
 for arg in "$@"; do
   case "$arg" in
-    --meshing) extra+=(gmsh tetgen) ;;
+    --meshing) extra+=(gmsh) ;;
     --bench) extra+=(libbullet-dev) ;;
     *) echo "setup.sh: unknown option '$arg'" >&2; exit 2 ;;
   esac

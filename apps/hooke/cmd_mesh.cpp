@@ -4,6 +4,7 @@
 #include <hooke/core/error.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/io/mesh_io.hpp>
+#include <hooke/io/mesher.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <hooke/mesh/tetrahedralize.hpp>
 #include <hooke/mesh/topology.hpp>
@@ -73,8 +74,8 @@ int run_tetrahedralize(const MeshOptions& o) {
   io::ReadOptions ro;
   ro.metres_per_unit = metres_per_unit(o.unit);
   mesh::TetrahedralizeReport r;
-  const mesh::Mesh tets = mesh::tetrahedralize(io::read_mesh(o.input, ro),
-                                               tetrahedralize_options(o.tetrahedralize, ro.metres_per_unit), &r);
+  const mesh::Mesh tets =
+      io::tetrahedralize(io::read_mesh(o.input, ro), tetrahedralize_options(o.tetrahedralize, ro.metres_per_unit), &r);
   io::WriteOptions wo;
   wo.binary = o.binary;
   io::write_mesh(o.output, tets, wo);

@@ -39,12 +39,13 @@ calibrate::SurfaceOptions surface_options(const SurfaceInput& in);
 struct TetrahedralizeInput {
   double size = 0.0, max_volume = 0.0;  ///< --size (unit), --max-volume (unit^3); 0: not given
   std::string surface_mesh = "keep";
+  std::string mesher = "netgen";
   mesh::TetrahedralizeOptions options;  ///< the numbers bound directly (quality, fineness, grading, steps)
 };
-/// Registers --size, --max-volume, --quality, --surface-mesh, --fineness, --grading and --optimisation-steps.
+/// Registers --mesher, --size, --max-volume, --quality, --surface-mesh, --fineness, --grading and --optimisation-steps.
 void add_tetrahedralize_options(CLI::App* cmd, TetrahedralizeInput& in);
 /// The library options `in` selects, lengths converted to metres with `metres_per_unit`.
-/// @throws InvalidArgument for --size with --max-volume (mesh::set_mesh_size), or an unknown --surface-mesh
+/// @throws InvalidArgument for --size with --max-volume (mesh::set_mesh_size), or an unknown --surface-mesh or --mesher
 mesh::TetrahedralizeOptions tetrahedralize_options(const TetrahedralizeInput& in, double metres_per_unit);
 
 /// Where a command's model comes from: a model file (--model), or a mesh calibrated by --method from E, nu.

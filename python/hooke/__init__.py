@@ -63,10 +63,11 @@ class ValidityWarning(UserWarning):
 
 
 def tetrahedralize(surface, **options):
-    """Fills the closed triangle surface `surface` (hooke.Mesh, m) with tets (Netgen), after checking it is closed,
+    """Fills the closed triangle surface `surface` (hooke.Mesh, m) with tets (Netgen or TetGen), after checking it is closed,
     manifold and not crossing itself (errors name the element). docs/meshing.md.
 
     options (keywords; the library's defaults otherwise):
+    mesher             "netgen" (default, linked) or "tetgen" (TetGen's program on files, never linked)
     size, max_volume   largest tet edge (m) or volume (m^3) inside the body; default: the bounding-box diagonal / 25
     surface_mesh       "keep" (default: the surface's triangles bound the tets, nodes exact) or "remesh"
     quality            refuse the mesh if a tet's radius ratio is below this (default 0: report only)

@@ -84,6 +84,12 @@ def test_tetrahedralize_a_closed_surface_and_calibrate_on_it():
     assert len(model.volume_tets) > 0
     surface_model = hooke.calibrate(cube, hooke.Material(1e5, 0.45), method="surface")
     assert surface_model.is_surface_model and surface_model.meshing == ""
+    # TetGen's program as the mesher: the same report, the surface kept exactly
+    tets, report = hooke.tetrahedralize(cube, mesher="tetgen")
+    assert "tetgen" in report["mesher"] and report["surface_preserved"]
+    assert abs(report["volume"] - 1e-3) < 1e-15
+    model = hooke.calibrate(cube, hooke.Material(1e5, 0.45), tetrahedralize={"mesher": "tetgen", "size": 0.05})
+    assert "tetgen" in model.meshing
 
 
 def test_tetrahedralize_refusals_name_the_cause():
@@ -94,5 +100,7 @@ def test_tetrahedralize_refusals_name_the_cause():
         hooke.tetrahedralize(cube, size=0.1, max_volume=1e-3)
     with pytest.raises(hooke.InvalidMesh, match="quality floor"):
         hooke.tetrahedralize(cube, quality=0.99)
+    with pytest.raises(hooke.InvalidArgument, match="mesher"):
+        hooke.tetrahedralize(cube, mesher="gmsh")
     with pytest.raises(hooke.InvalidMesh, match="closed triangle surface"):
         hooke.tetrahedralize(hooke.tet_box(1, 1, 1, 1, 1, 1))

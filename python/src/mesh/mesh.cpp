@@ -7,6 +7,7 @@
 #include <hooke/core/error.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/io/mesh_io.hpp>
+#include <hooke/io/mesher.hpp>
 #include <hooke/mesh/generators.hpp>
 #include <hooke/mesh/tetrahedralize.hpp>
 #include <hooke/mesh/validate.hpp>
@@ -119,6 +120,8 @@ void define_mesh(py::module_& m) {
       const std::string k = py::str(key);
       if (k == "size")
         size = value.cast<double>();
+      else if (k == "mesher")
+        o.mesher = mesh::mesher_from_name(value.cast<std::string>());
       else if (k == "max_volume")
         max_volume = value.cast<double>();
       else if (k == "surface_mesh")
@@ -133,7 +136,7 @@ void define_mesh(py::module_& m) {
         o.optimisation_steps = value.cast<int>();
       else
         throw InvalidArgument("unknown tetrahedralize option '" + k +
-                              "' (valid: size, max_volume, surface_mesh, quality, fineness, grading, "
+                              "' (valid: mesher, size, max_volume, surface_mesh, quality, fineness, grading, "
                               "optimisation_steps)");
     }
     mesh::set_mesh_size(o, size, max_volume);
@@ -147,7 +150,7 @@ void define_mesh(py::module_& m) {
         mesh::Mesh tets;
         {
           py::gil_scoped_release release;
-          tets = mesh::tetrahedralize(surface, o, &r);
+          tets = io::tetrahedralize(surface, o, &r);
         }
         py::dict d;
         d["mesher"] = r.backend;

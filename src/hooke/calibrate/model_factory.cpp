@@ -6,6 +6,7 @@
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
 #include <hooke/fem/elastic_block.hpp>
+#include <hooke/io/mesher.hpp>
 #include <hooke/model/mass.hpp>
 #include <hooke/model/orientation_guard.hpp>
 
@@ -96,7 +97,7 @@ CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material
   const ModelKind kind = model_kind_of_method(options.method);
   if (mesh.kind == mesh::ElementKind::kSurfaceTriangle && kind != ModelKind::kSurface) {
     mesh::TetrahedralizeReport report;
-    const mesh::Mesh tets = mesh::tetrahedralize(mesh, options.tetrahedralize, &report);
+    const mesh::Mesh tets = io::tetrahedralize(mesh, options.tetrahedralize, &report);
     CalibratedModel out = calibrate_model(tets, material, options);
     out.meshing = report.summary();
     return out;

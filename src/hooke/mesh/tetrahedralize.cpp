@@ -15,6 +15,7 @@
 #include <mutex>
 #include <ostream>
 #include <string>
+#include <utility>
 
 // Netgen's C interface (Debian libnglib-dev): its declarations live in namespace nglib in the library.
 namespace nglib {
@@ -61,6 +62,8 @@ void check_options(const TetrahedralizeOptions& o) {
     throw InvalidArgument("the quality floor (radius ratio) must lie in [0, 1), not " + general(o.min_radius_ratio));
   if (!(o.max_volume_error > 0.0) || !std::isfinite(o.max_volume_error))
     throw InvalidArgument("the allowed volume error must be > 0, not " + general(o.max_volume_error));
+  if (o.mesher == Mesher::kTetgen && o.surface == SurfaceMeshing::kRemesh)
+    throw InvalidArgument("the tetgen mesher keeps the scan's triangles; --surface-mesh remesh is Netgen's");
 }
 
 // Owns one Netgen mesh; every call into Netgen goes through run(), which turns its exceptions into InvalidMesh.
@@ -168,6 +171,11 @@ Mesh netgen_volume(const Mesh& surface, const TetrahedralizeOptions& o) {
 
 }  // namespace
 
+constexpr NameTable<Mesher, 2> kMeshers{"mesher", {{{Mesher::kNetgen, "netgen"}, {Mesher::kTetgen, "tetgen"}}}};
+
+Mesher mesher_from_name(std::string_view name) { return kMeshers.from_name(name); }
+std::string_view mesher_name(Mesher mesher) { return kMeshers.name(mesher); }
+
 constexpr NameTable<SurfaceMeshing, 2> kSurfaceMeshings{
     "surface meshing", {{{SurfaceMeshing::kRemesh, "remesh"}, {SurfaceMeshing::kKeep, "keep"}}}};
 
@@ -189,9 +197,11 @@ void set_mesh_size(TetrahedralizeOptions& options, double max_edge, double max_v
 }
 
 std::string TetrahedralizeReport::summary() const {
+  const std::string netgen_only = options.mesher == Mesher::kNetgen ? ", fineness " + general(options.fineness) +
+                                                                          ", grading " + general(options.grading)
+                                                                    : std::string();
   return backend + ", surface " + std::string(surface_meshing_name(options.surface)) + ", size " +
-         general(options.max_size) + " m, fineness " + general(options.fineness) + ", grading " +
-         general(options.grading) + ": " + std::to_string(surface_nodes) + " surface nodes, " +
+         general(options.max_size) + " m" + netgen_only + ": " + std::to_string(surface_nodes) + " surface nodes, " +
          std::to_string(surface_triangles) + " triangles -> " + std::to_string(nodes) + " nodes, " +
          std::to_string(tets) + " tets; volume " + (volume_error >= 0.0 ? "+" : "") + fixed(100.0 * volume_error, 2) +
          " % of the enclosed volume; Hausdorff " + general(hausdorff) + " m (" + fixed(100.0 * hausdorff_relative, 2) +
@@ -201,14 +211,24 @@ std::string TetrahedralizeReport::summary() const {
          " slivers; " + fixed(seconds, 2) + " s";
 }
 
+VolumeMesher netgen_mesher() { return {"netgen 6.2 (nglib)", netgen_volume}; }
+
 Mesh tetrahedralize(Mesh surface, const TetrahedralizeOptions& options, TetrahedralizeReport* report) {
+  if (options.mesher != Mesher::kNetgen)
+    throw InvalidArgument("the " + std::string(mesher_name(options.mesher)) +
+                          " mesher runs a program on files: io::tetrahedralize (io/mesher.hpp) does that");
+  return tetrahedralize(std::move(surface), options, report, netgen_mesher());
+}
+
+Mesh tetrahedralize(Mesh surface, const TetrahedralizeOptions& options, TetrahedralizeReport* report,
+                    const VolumeMesher& mesher) {
   const auto start = std::chrono::steady_clock::now();
   check_options(options);
   if (surface.kind != ElementKind::kSurfaceTriangle)
     throw InvalidMesh("tetrahedralizing needs a closed triangle surface; " + where(surface) + " holds " +
                       std::string(element_kind_name(surface.kind)) + " elements");
   TetrahedralizeReport r;
-  r.backend = "netgen 6.2 (nglib)";
+  r.backend = mesher.name;
   r.options = options;
   r.surface_nodes = surface.node_count();
   r.surface_triangles = surface.element_count();
@@ -222,7 +242,7 @@ Mesh tetrahedralize(Mesh surface, const TetrahedralizeOptions& options, Tetrahed
                 " m across: if its coordinates are millimetres, give --unit mm (hooke works in metres)");
   if (r.options.max_size == 0.0) r.options.max_size = diagonal / 25.0;
 
-  Mesh tets = netgen_volume(surface, r.options);
+  Mesh tets = mesher.fill(surface, r.options);
   validate(tets);
   r.nodes = tets.node_count();
   r.tets = tets.element_count();

@@ -2,6 +2,7 @@
 /// From a closed triangle surface (a scan's STL/OFF) to a tet mesh of the solid it bounds: the surface checks
 /// before, Netgen's mesher (nglib, LGPL-2.1, linked dynamically, so hooke stays MIT), the quality and fidelity
 /// report after (docs/meshing.md).
+#include <functional>
 #include <hooke/mesh/mesh.hpp>
 #include <hooke/mesh/tet_quality.hpp>
 #include <string>
@@ -22,7 +23,18 @@ enum class SurfaceMeshing {
 SurfaceMeshing surface_meshing_from_name(std::string_view name);
 std::string_view surface_meshing_name(SurfaceMeshing meshing);
 
+/// Which program fills the surface with tets.
+enum class Mesher {
+  kNetgen,  ///< Netgen's nglib, linked (LGPL-2.1), in process: the default, always installed
+  kTetgen,  ///< TetGen's `tetgen` program run on files in a temporary folder (AGPL-3: never linked; `scripts/setup.sh`
+            ///< installs it): about 8 times faster on large scans, keeps the surface only (io/mesher.hpp)
+};
+/// "netgen" or "tetgen". @throws InvalidArgument naming the valid values
+Mesher mesher_from_name(std::string_view name);
+std::string_view mesher_name(Mesher mesher);
+
 struct TetrahedralizeOptions {
+  Mesher mesher = Mesher::kNetgen;
   /// Largest tet edge, m; 0: the bounding-box diagonal / 25. (--max-volume V is the edge of the regular tet of
   /// volume V: (6 sqrt(2) V)^(1/3).) Inside the body; at a kept surface the scan's triangles set the size.
   double max_size = 0.0;
@@ -42,6 +54,10 @@ struct TetrahedralizeOptions {
   double min_radius_ratio = 0.0;
   double max_volume_error = 0.01;  ///< |V_tets / V_surface - 1| above this fails the meshing
 };
+
+/// TetGen's quality targets (its -q switch), used by Mesher::kTetgen: radius-edge ratio and smallest dihedral angle.
+inline constexpr double kTetgenRadiusEdge = 1.414;
+inline constexpr double kTetgenMinDihedralDegrees = 10.0;
 
 /// Below this radius ratio a tet is called a sliver in reports and warnings.
 inline constexpr double kSliverRadiusRatio = 0.01;
@@ -73,11 +89,25 @@ struct TetrahedralizeReport {
 /// a warning when the surface is larger than 10 m across (a file in millimetres read as metres: give --unit mm).
 /// After: the volume within options.max_volume_error of the enclosed volume, every tet's radius ratio above
 /// options.min_radius_ratio, the quality and Hausdorff distance in `report`. Netgen's own messages are silenced;
-/// calls are serialised (Netgen keeps global state).
+/// calls are serialised (Netgen keeps global state). options.mesher must be kNetgen here: TetGen runs as a program
+/// on files, which io::tetrahedralize (io/mesher.hpp) does.
 /// @throws InvalidMesh naming the element of the input surface that fails a check, or the mesher's failure and
 ///   its message, or the tet below the quality floor or the volume off by more than allowed, with what to change;
 ///   InvalidArgument for options out of range
 Mesh tetrahedralize(Mesh surface, const TetrahedralizeOptions& options = {}, TetrahedralizeReport* report = nullptr);
+
+/// A volume mesher: `fill` returns tets (positively oriented) filling a surface that has passed the checks of
+/// tetrahedralize, with the options as resolved there (max_size > 0).
+struct VolumeMesher {
+  std::string name;  ///< the mesher and its version, as reports give it
+  std::function<Mesh(const Mesh& surface, const TetrahedralizeOptions& options)> fill;
+};
+/// Netgen's nglib in process (what the three-argument tetrahedralize uses).
+VolumeMesher netgen_mesher();
+/// tetrahedralize with the given mesher in place of the one options.mesher names: the same checks before and
+/// report after. io::tetrahedralize supplies TetGen's (a program run on files, which this layer cannot do).
+Mesh tetrahedralize(Mesh surface, const TetrahedralizeOptions& options, TetrahedralizeReport* report,
+                    const VolumeMesher& mesher);
 
 /// The edge length (m) of the regular tet of volume `volume` (m^3): what --max-volume sets max_size to.
 /// @pre volume > 0
