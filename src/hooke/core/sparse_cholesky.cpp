@@ -2,6 +2,7 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
+#include <immintrin.h>
 #include <omp.h>
 #include <algorithm>
 #include <bit>
@@ -39,6 +40,15 @@ struct Supernodes {
   int n, nsuper;
   const int *perm, *super, *pi, *px, *rows;
 };
+
+// Runs group(0) and group(1) of a split on two threads (both on one where OMP_NUM_THREADS=1: the same operations,
+// the same bits).
+template <class F>
+void on_two_groups(F&& group) {
+  const int threads_wanted = std::min(2, omp_get_max_threads());
+#pragma omp parallel num_threads(threads_wanted)
+  for (int g = omp_get_thread_num(); g < 2; g += omp_get_num_threads()) group(static_cast<size_t>(g));
+}
 
 // L L^T x = b for CHOLMOD's supernodal factor of P A P^T, R right-hand sides interleaved in b. CHOLMOD's own solve
 // goes through BLAS, whose small-matrix dgemm kernel in OpenBLAS 0.3.21 calls malloc on every call (caught by
@@ -102,13 +112,7 @@ void supernodal_solve(const cholmod_factor& l, const S* lx, double* b, S* w, S* 
   } else {
     for (int r = 0; r < nrhs; ++r)
       for (int k : split->top_columns) w2[r * n + k] = S(0);
-    // Group g's work on thread g (both on one where OMP_NUM_THREADS=1: the same operations, the same bits).
-    const int threads_wanted = std::min(2, omp_get_max_threads());
-    auto on_groups = [&](auto&& group) {
-#pragma omp parallel num_threads(threads_wanted)
-      for (int g = omp_get_thread_num(); g < 2; g += omp_get_num_threads()) group(static_cast<size_t>(g));
-    };
-    on_groups([&](size_t g) {
+    on_two_groups([&](size_t g) {
       for (const auto& [first, last] : split->ranges[g])
         for (int s = first; s <= last; ++s)
           forward(s, g == 0 ? t : t2, g == 0 ? 0 : super[last + 1], g == 0 ? nullptr : w2);
@@ -117,7 +121,7 @@ void supernodal_solve(const cholmod_factor& l, const S* lx, double* b, S* w, S* 
       for (int k : split->top_columns) w[r * n + k] -= w2[r * n + k];
     for (int s : split->top) forward(s, t, 0, nullptr);
     for (auto it = split->top.rbegin(); it != split->top.rend(); ++it) backward(*it, t);
-    on_groups([&](size_t g) {
+    on_two_groups([&](size_t g) {
       for (auto range = split->ranges[g].rbegin(); range != split->ranges[g].rend(); ++range)
         for (int s = (*range)[1]; s >= (*range)[0]; --s) backward(s, g == 0 ? t : t2);
     });
@@ -140,83 +144,254 @@ inline float from_bfloat16(std::uint16_t h) { return std::bit_cast<float>(static
 // matrices (docs/simulation.md): a preconditioner or quasi-Newton initial Hessian, never a solution. Each
 // supernode's rows are gathered into t (n rows x R, interleaved), its columns applied as contiguous axpys
 // (forward) and dot products (backward), and scattered back. w: n x R work, interleaved; t: (max rows) x R.
+//
+// A supernode's rows of w gathered into t; with `spill`, the rows from `bound` on start from 0 instead (their
+// updates go to spill). Returns how many rows come from w.
 template <int R>
-[[gnu::always_inline]] inline void bfloat16_kernel(const cholmod_factor& l, const std::uint16_t* lx, double* b,
-                                                   float* w, float* t) {
-  const Supernodes f(l);
-  const int n = f.n, nsuper = f.nsuper;
-  const int *perm = f.perm, *super = f.super, *pi = f.pi, *px = f.px, *rows = f.rows;
-  for (int k = 0; k < n; ++k)
-    for (int r = 0; r < R; ++r) w[R * k + r] = static_cast<float>(b[R * perm[k] + r]);
-  for (int s = 0; s < nsuper; ++s) {  // L y = P b
-    const int nsc = super[s + 1] - super[s], nsrow = pi[s + 1] - pi[s];
-    const int* srows = rows + pi[s];
-    for (int i = 0; i < nsrow; ++i)
-      for (int r = 0; r < R; ++r) t[R * i + r] = w[R * srows[i] + r];
-    for (int j = 0; j < nsc; ++j) {
-      const std::uint16_t* col = lx + px[s] + static_cast<std::ptrdiff_t>(j) * nsrow;
-      float y[R];
-      const float d = from_bfloat16(col[j]);
-      for (int r = 0; r < R; ++r) y[r] = t[R * j + r] /= d;
-      for (int i = j + 1; i < nsrow; ++i) {
-        const float v = from_bfloat16(col[i]);
-        for (int r = 0; r < R; ++r) t[R * i + r] -= v * y[r];
-      }
+[[gnu::always_inline]] inline int gather_rows(const int* srows, int nsrow, const float* w, float* t, int bound,
+                                              const float* spill) {
+  const int inside = spill ? static_cast<int>(std::lower_bound(srows, srows + nsrow, bound) - srows) : nsrow;
+  for (int i = 0; i < inside; ++i)
+    for (int r = 0; r < R; ++r) t[R * i + r] = w[R * srows[i] + r];
+  for (int i = inside; i < nsrow; ++i)
+    for (int r = 0; r < R; ++r) t[R * i + r] = 0.0f;
+  return inside;
+}
+// t scattered back: the first `inside` rows to w, the others added to spill.
+template <int R>
+[[gnu::always_inline]] inline void scatter_rows(const int* srows, int nsrow, int inside, const float* t, float* w,
+                                                float* spill) {
+  for (int i = 0; i < inside; ++i)
+    for (int r = 0; r < R; ++r) w[R * srows[i] + r] = t[R * i + r];
+  for (int i = inside; i < nsrow; ++i)
+    for (int r = 0; r < R; ++r) spill[R * srows[i] + r] += t[R * i + r];
+}
+
+// L y = P b at supernode s. With `spill` (the second group of a split), the rows from `bound` on (the top's) start
+// from 0 and their updates are added to spill instead of w, which the first group writes at the same time.
+template <int R>
+[[gnu::always_inline]] inline void bfloat16_forward(const Supernodes& f, const std::uint16_t* lx, int s, float* w,
+                                                    float* t, int bound, float* spill) {
+  const int nsc = f.super[s + 1] - f.super[s], nsrow = f.pi[s + 1] - f.pi[s];
+  const int* srows = f.rows + f.pi[s];
+  const int inside = gather_rows<R>(srows, nsrow, w, t, bound, spill);
+  for (int j = 0; j < nsc; ++j) {
+    const std::uint16_t* col = lx + f.px[s] + static_cast<std::ptrdiff_t>(j) * nsrow;
+    float y[R];
+    const float d = from_bfloat16(col[j]);
+    for (int r = 0; r < R; ++r) y[r] = t[R * j + r] /= d;
+    for (int i = j + 1; i < nsrow; ++i) {
+      const float v = from_bfloat16(col[i]);
+      for (int r = 0; r < R; ++r) t[R * i + r] -= v * y[r];
     }
-    for (int i = 0; i < nsrow; ++i)
-      for (int r = 0; r < R; ++r) w[R * srows[i] + r] = t[R * i + r];
   }
-  for (int s = nsuper - 1; s >= 0; --s) {  // L^T z = y
-    const int nsc = super[s + 1] - super[s], nsrow = pi[s + 1] - pi[s];
-    const int* srows = rows + pi[s];
-    for (int i = 0; i < nsrow; ++i)
-      for (int r = 0; r < R; ++r) t[R * i + r] = w[R * srows[i] + r];
-    for (int j = nsc - 1; j >= 0; --j) {
-      const std::uint16_t* col = lx + px[s] + static_cast<std::ptrdiff_t>(j) * nsrow;
-      // kLanes partial sums: float addition is not associative, so one running sum would not vectorise.
-      constexpr int kLanes = 16;
-      float lanes[R][kLanes] = {};
-      int i = j + 1;
-      for (; i + kLanes <= nsrow; i += kLanes)
-        for (int r = 0; r < R; ++r)
-          for (int q = 0; q < kLanes; ++q) lanes[r][q] += from_bfloat16(col[i + q]) * t[R * (i + q) + r];
-      float sum[R] = {};
-      for (; i < nsrow; ++i)
-        for (int r = 0; r < R; ++r) sum[r] += from_bfloat16(col[i]) * t[R * i + r];
+  scatter_rows<R>(srows, nsrow, inside, t, w, spill);
+}
+
+// L^T z = y at supernode s: reads its rows of w, writes only its own columns.
+template <int R>
+[[gnu::always_inline]] inline void bfloat16_backward(const Supernodes& f, const std::uint16_t* lx, int s, float* w,
+                                                     float* t) {
+  const int nsc = f.super[s + 1] - f.super[s], nsrow = f.pi[s + 1] - f.pi[s];
+  const int* srows = f.rows + f.pi[s];
+  for (int i = 0; i < nsrow; ++i)
+    for (int r = 0; r < R; ++r) t[R * i + r] = w[R * srows[i] + r];
+  for (int j = nsc - 1; j >= 0; --j) {
+    const std::uint16_t* col = lx + f.px[s] + static_cast<std::ptrdiff_t>(j) * nsrow;
+    // kLanes partial sums: float addition is not associative, so one running sum would not vectorise.
+    constexpr int kLanes = 16;
+    float lanes[R][kLanes] = {};
+    int i = j + 1;
+    for (; i + kLanes <= nsrow; i += kLanes)
       for (int r = 0; r < R; ++r)
-        for (int q = 0; q < kLanes; ++q) sum[r] += lanes[r][q];
-      const float d = from_bfloat16(col[j]);
-      for (int r = 0; r < R; ++r) t[R * j + r] = (t[R * j + r] - sum[r]) / d;
-    }
-    for (int j = 0; j < nsc; ++j)
-      for (int r = 0; r < R; ++r) w[R * srows[j] + r] = t[R * j + r];
+        for (int q = 0; q < kLanes; ++q) lanes[r][q] += from_bfloat16(col[i + q]) * t[R * (i + q) + r];
+    float sum[R] = {};
+    for (; i < nsrow; ++i)
+      for (int r = 0; r < R; ++r) sum[r] += from_bfloat16(col[i]) * t[R * i + r];
+    for (int r = 0; r < R; ++r)
+      for (int q = 0; q < kLanes; ++q) sum[r] += lanes[r][q];
+    const float d = from_bfloat16(col[j]);
+    for (int r = 0; r < R; ++r) t[R * j + r] = (t[R * j + r] - sum[r]) / d;
   }
-  for (int k = 0; k < n; ++k)
-    for (int r = 0; r < R; ++r) b[R * perm[k] + r] = w[R * k + r];
+  for (int j = 0; j < nsc; ++j)
+    for (int r = 0; r < R; ++r) w[R * srows[j] + r] = t[R * j + r];
 }
 
-// The kernel compiled twice: for the baseline x86-64 (SSE2) and for AVX2, picked at run time. Without the wider
-// vectors the widening and the products, not the memory, bound it: 34 275 DOFs 11.5 ms with SSE2, 8.6 ms with
-// AVX2 (float copy 11.3-13.7 ms, double 23-27 ms, one thread, the same run). Both builds add in the same order.
+// The supernode kernels compiled twice: for the baseline x86-64 (SSE2) and for AVX2, picked at run time. Without
+// the wider vectors the widening and the products bound it: 34 275 DOFs 11.5 ms with SSE2, 8.6 ms with AVX2 (float
+// copy 11.3-13.7 ms, double 23-27 ms, one thread, the same run). Both builds add in the same order. One right-hand
+// side (quasi-Newton's rest H0) has its own AVX2 + FMA kernels below.
 template <int R>
-void bfloat16_baseline(const cholmod_factor& l, const std::uint16_t* lx, double* b, float* w, float* t) {
-  bfloat16_kernel<R>(l, lx, b, w, t);
+struct Bfloat16Kernels {
+  void (*forward)(const Supernodes&, const std::uint16_t*, int, float*, float*, int, float*);
+  void (*backward)(const Supernodes&, const std::uint16_t*, int, float*, float*);
+};
+template <int R>
+void bfloat16_forward_baseline(const Supernodes& f, const std::uint16_t* lx, int s, float* w, float* t, int bound,
+                               float* spill) {
+  bfloat16_forward<R>(f, lx, s, w, t, bound, spill);
+}
+template <int R>
+void bfloat16_backward_baseline(const Supernodes& f, const std::uint16_t* lx, int s, float* w, float* t) {
+  bfloat16_backward<R>(f, lx, s, w, t);
 }
 #if defined(__x86_64__) && defined(__GNUC__)
 template <int R>
-[[gnu::target("avx2")]] void bfloat16_avx2(const cholmod_factor& l, const std::uint16_t* lx, double* b, float* w,
-                                           float* t) {
-  bfloat16_kernel<R>(l, lx, b, w, t);
+[[gnu::target("avx2")]] void bfloat16_forward_avx2(const Supernodes& f, const std::uint16_t* lx, int s, float* w,
+                                                   float* t, int bound, float* spill) {
+  bfloat16_forward<R>(f, lx, s, w, t, bound, spill);
+}
+template <int R>
+[[gnu::target("avx2")]] void bfloat16_backward_avx2(const Supernodes& f, const std::uint16_t* lx, int s, float* w,
+                                                    float* t) {
+  bfloat16_backward<R>(f, lx, s, w, t);
+}
+#endif
+#if defined(__x86_64__) && defined(__GNUC__)
+// One right-hand side with AVX2 and FMA, by hand (GCC's vectoriser gathers the 16-bit values one by one when
+// several columns share a loop): kBlock columns at a time, so that each row below them is loaded and stored once
+// for all of them (forward) or loaded once for their kBlock dot products (backward). 34 275 DOFs (the 11 425-node
+// benchmark cylinder's rest matrix), the same run: the generic AVX2 kernel 12.9-13.1 ms, this one 11.3 ms, and
+// 5.8-7.3 ms with the two-thread split (docs/simulation.md).
+constexpr int kBlock = 4;
+
+[[gnu::target("avx2,fma")]] inline __m256 bfloat16x8(const std::uint16_t* p) {
+  const __m128i h = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
+  return _mm256_castsi256_ps(_mm256_slli_epi32(_mm256_cvtepu16_epi32(h), 16));
+}
+[[gnu::target("avx2,fma")]] inline float sum8(__m256 v) {
+  const __m128 q = _mm_add_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+  const __m128 h = _mm_add_ps(q, _mm_movehl_ps(q, q));
+  return _mm_cvtss_f32(_mm_add_ss(h, _mm_shuffle_ps(h, h, 1)));
+}
+
+[[gnu::target("avx2,fma")]] void bfloat16_forward_fma(const Supernodes& f, const std::uint16_t* lx, int s, float* w,
+                                                      float* t, int bound, float* spill) {
+  const int nsc = f.super[s + 1] - f.super[s], nsrow = f.pi[s + 1] - f.pi[s];
+  const int* srows = f.rows + f.pi[s];
+  const int inside = gather_rows<1>(srows, nsrow, w, t, bound, spill);
+  const std::uint16_t* x = lx + f.px[s];
+  int j = 0;
+  for (; j + kBlock <= nsc; j += kBlock) {
+    const std::uint16_t* col[kBlock];
+    float y[kBlock];
+    __m256 yv[kBlock];
+    for (int q = 0; q < kBlock; ++q) {
+      col[q] = x + static_cast<std::ptrdiff_t>(j + q) * nsrow;
+      y[q] = t[j + q] /= from_bfloat16(col[q][j + q]);
+      yv[q] = _mm256_set1_ps(y[q]);
+      for (int i = j + q + 1; i < j + kBlock; ++i) t[i] -= from_bfloat16(col[q][i]) * y[q];
+    }
+    int i = j + kBlock;
+    for (; i + 8 <= nsrow; i += 8) {
+      __m256 v = _mm256_loadu_ps(t + i);
+      for (int q = 0; q < kBlock; ++q) v = _mm256_fnmadd_ps(bfloat16x8(col[q] + i), yv[q], v);
+      _mm256_storeu_ps(t + i, v);
+    }
+    for (; i < nsrow; ++i)
+      for (int q = 0; q < kBlock; ++q) t[i] -= from_bfloat16(col[q][i]) * y[q];
+  }
+  for (; j < nsc; ++j) {
+    const std::uint16_t* col = x + static_cast<std::ptrdiff_t>(j) * nsrow;
+    const float y = t[j] /= from_bfloat16(col[j]);
+    const __m256 yv = _mm256_set1_ps(y);
+    int i = j + 1;
+    for (; i + 8 <= nsrow; i += 8)
+      _mm256_storeu_ps(t + i, _mm256_fnmadd_ps(bfloat16x8(col + i), yv, _mm256_loadu_ps(t + i)));
+    for (; i < nsrow; ++i) t[i] -= from_bfloat16(col[i]) * y;
+  }
+  scatter_rows<1>(srows, nsrow, inside, t, w, spill);
+}
+
+[[gnu::target("avx2,fma")]] void bfloat16_backward_fma(const Supernodes& f, const std::uint16_t* lx, int s, float* w,
+                                                       float* t) {
+  const int nsc = f.super[s + 1] - f.super[s], nsrow = f.pi[s + 1] - f.pi[s];
+  const int* srows = f.rows + f.pi[s];
+  for (int i = 0; i < nsrow; ++i) t[i] = w[srows[i]];
+  const std::uint16_t* x = lx + f.px[s];
+  int j = nsc - 1;
+  for (; j >= 0 && (j + 1) % kBlock != 0; --j) {  // the last nsc % kBlock columns one at a time
+    const std::uint16_t* col = x + static_cast<std::ptrdiff_t>(j) * nsrow;
+    __m256 a0 = _mm256_setzero_ps(), a1 = _mm256_setzero_ps();
+    int i = j + 1;
+    for (; i + 16 <= nsrow; i += 16) {
+      a0 = _mm256_fmadd_ps(bfloat16x8(col + i), _mm256_loadu_ps(t + i), a0);
+      a1 = _mm256_fmadd_ps(bfloat16x8(col + i + 8), _mm256_loadu_ps(t + i + 8), a1);
+    }
+    float sum = sum8(_mm256_add_ps(a0, a1));
+    for (; i < nsrow; ++i) sum += from_bfloat16(col[i]) * t[i];
+    t[j] = (t[j] - sum) / from_bfloat16(col[j]);
+  }
+  for (; j >= 0; j -= kBlock) {
+    const int j0 = j - kBlock + 1;  // the block's first column
+    const std::uint16_t* col[kBlock];
+    __m256 acc[kBlock];
+    for (int q = 0; q < kBlock; ++q) {
+      col[q] = x + static_cast<std::ptrdiff_t>(j0 + q) * nsrow;
+      acc[q] = _mm256_setzero_ps();
+    }
+    int i = j0 + kBlock;
+    for (; i + 8 <= nsrow; i += 8) {
+      const __m256 tv = _mm256_loadu_ps(t + i);
+      for (int q = 0; q < kBlock; ++q) acc[q] = _mm256_fmadd_ps(bfloat16x8(col[q] + i), tv, acc[q]);
+    }
+    float sum[kBlock];
+    for (int q = 0; q < kBlock; ++q) {
+      sum[q] = sum8(acc[q]);
+      for (int k = i; k < nsrow; ++k) sum[q] += from_bfloat16(col[q][k]) * t[k];
+    }
+    for (int q = kBlock - 1; q >= 0; --q) {
+      for (int k = j0 + q + 1; k < j0 + kBlock; ++k) sum[q] += from_bfloat16(col[q][k]) * t[k];
+      t[j0 + q] = (t[j0 + q] - sum[q]) / from_bfloat16(col[q][j0 + q]);
+    }
+  }
+  for (int c = 0; c < nsc; ++c) w[srows[c]] = t[c];
 }
 #endif
 
 template <int R>
-void supernodal_solve_bfloat16(const cholmod_factor& l, const std::uint16_t* lx, double* b, float* w, float* t) {
+Bfloat16Kernels<R> bfloat16_kernels() {
 #if defined(__x86_64__) && defined(__GNUC__)
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2) return bfloat16_avx2<R>(l, lx, b, w, t);
+  static const bool avx2 = __builtin_cpu_supports("avx2"), fma = __builtin_cpu_supports("fma");
+  if constexpr (R == 1)
+    if (avx2 && fma) return {bfloat16_forward_fma, bfloat16_backward_fma};
+  if (avx2) return {bfloat16_forward_avx2<R>, bfloat16_backward_avx2<R>};
 #endif
-  bfloat16_baseline<R>(l, lx, b, w, t);
+  return {bfloat16_forward_baseline<R>, bfloat16_backward_baseline<R>};
+}
+
+// The whole bfloat16 solve, on two threads with a split as supernodal_solve (w2: the second group's n x R buffer,
+// t2: its rows work), on one without. The order of every operation is fixed by the split, not by the threads.
+template <int R>
+void supernodal_solve_bfloat16(const cholmod_factor& l, const std::uint16_t* lx, double* b, float* w, float* t,
+                               const detail::SupernodeSplit* split = nullptr, float* w2 = nullptr,
+                               float* t2 = nullptr) {
+  const Supernodes f(l);
+  const Bfloat16Kernels<R> k = bfloat16_kernels<R>();
+  for (int c = 0; c < f.n; ++c)
+    for (int r = 0; r < R; ++r) w[R * c + r] = static_cast<float>(b[R * f.perm[c] + r]);
+  if (split == nullptr || !split->parallel()) {
+    for (int s = 0; s < f.nsuper; ++s) k.forward(f, lx, s, w, t, 0, nullptr);
+    for (int s = f.nsuper - 1; s >= 0; --s) k.backward(f, lx, s, w, t);
+  } else {
+    for (int c : split->top_columns)
+      for (int r = 0; r < R; ++r) w2[R * c + r] = 0.0f;
+    on_two_groups([&](size_t g) {
+      for (const auto& [first, last] : split->ranges[g])
+        for (int s = first; s <= last; ++s)
+          k.forward(f, lx, s, w, g == 0 ? t : t2, g == 0 ? 0 : f.super[last + 1], g == 0 ? nullptr : w2);
+    });
+    for (int c : split->top_columns)
+      for (int r = 0; r < R; ++r) w[R * c + r] += w2[R * c + r];
+    for (int s : split->top) k.forward(f, lx, s, w, t, 0, nullptr);
+    for (auto it = split->top.rbegin(); it != split->top.rend(); ++it) k.backward(f, lx, *it, w, t);
+    on_two_groups([&](size_t g) {
+      for (auto range = split->ranges[g].rbegin(); range != split->ranges[g].rend(); ++range)
+        for (int s = (*range)[1]; s >= (*range)[0]; --s) k.backward(f, lx, s, w, g == 0 ? t : t2);
+    });
+  }
+  for (int c = 0; c < f.n; ++c)
+    for (int r = 0; r < R; ++r) b[R * f.perm[c] + r] = w[R * c + r];
 }
 
 // The fill-reducing orderings CHOLMOD chose for the last few sparsity patterns, shared by every SparseCholesky in
@@ -393,19 +568,19 @@ struct SparseCholesky::Impl {
       }
       float* w = single_work.data();
       float* t = single_rows.data();
-      if (use == SolvePrecision::kSingle) {
-        if (split.parallel() && single_split_work.size() != work) {
-          single_split_work.resize(work);
-          single_split_rows.resize(rows_work);
-        }
-        supernodal_solve(l, single_x.data(), b, w, t, nrhs, &split, single_split_work.data(), single_split_rows.data());
-      } else if (nrhs == 1) {
-        supernodal_solve_bfloat16<1>(l, brain_x.data(), b, w, t);
-      } else if (nrhs == 2) {
-        supernodal_solve_bfloat16<2>(l, brain_x.data(), b, w, t);
-      } else {
-        supernodal_solve_bfloat16<3>(l, brain_x.data(), b, w, t);
+      if (split.parallel() && (single_split_work.size() != work || single_split_rows.size() < 3 * max_super_rows)) {
+        single_split_work.resize(work);
+        single_split_rows.resize(std::max(rows_work, 3 * max_super_rows));
       }
+      float *w2 = single_split_work.data(), *t2 = single_split_rows.data();
+      if (use == SolvePrecision::kSingle)
+        supernodal_solve(l, single_x.data(), b, w, t, nrhs, &split, w2, t2);
+      else if (nrhs == 1)
+        supernodal_solve_bfloat16<1>(l, brain_x.data(), b, w, t, &split, w2, t2);
+      else if (nrhs == 2)
+        supernodal_solve_bfloat16<2>(l, brain_x.data(), b, w, t, &split, w2, t2);
+      else
+        supernodal_solve_bfloat16<3>(l, brain_x.data(), b, w, t, &split, w2, t2);
       return;
     }
     if (supernodal_work.size() != static_cast<Eigen::Index>(work)) {

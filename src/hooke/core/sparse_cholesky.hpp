@@ -37,7 +37,7 @@ class SparseCholesky {
   VecX solve(const VecX& b) const;
   /// Solves A X = B in place for `nrhs` (1, 2 or 3) right-hand sides stored interleaved, b[nrhs i + r] (a
   /// row-major n x nrhs array: flat node-major positions when A is a per-node matrix). Triangular solves on
-  /// CHOLMOD's supernodal factor (on two threads where parallel_solve(); the bfloat16 copy on one), or on a copy of
+  /// CHOLMOD's supernodal factor (on two threads where parallel_solve()), or on a copy of
   /// Eigen's factor made at the first call after a factorisation. Allocates nothing after the first call.
   /// @pre factorize() returned true
   void solve_in_place(double* b, int nrhs) const;

@@ -214,13 +214,14 @@ class QuasiNewtonStep final : public IntegratorStep {
     for (size_t k = 0; k < m_held.size(); ++k)
       for (int a = 0; a < r; ++a) m_lambda(static_cast<Eigen::Index>(k), a) = z(r * m_held[k] + a);
     m_capacitance.solveInPlace(m_lambda);
-    const Eigen::Index c = m_w.cols();
-    for (Eigen::Index u = 0; u < m_w.rows(); ++u)
+    // z -= W lambda, W column by column (n x c, column-major: a row-wise sum would stride n doubles per term).
+    for (Eigen::Index k = 0; k < m_w.cols(); ++k) {
+      const double* w = m_w.col(k).data();
       for (int a = 0; a < r; ++a) {
-        double sum = 0.0;
-        for (Eigen::Index k = 0; k < c; ++k) sum += m_w(u, k) * m_lambda(k, a);
-        z(r * u + a) -= sum;
+        const double l = m_lambda(k, a);
+        for (Eigen::Index u = 0; u < m_w.rows(); ++u) z(r * u + a) -= w[u] * l;
       }
+    }
     for (int u : m_held)
       for (int a = 0; a < r; ++a) z(r * u + a) = 0.0;  // exactly, not to round-off
   }
