@@ -138,23 +138,17 @@ std::uint16_t to_bfloat16(double x) {
 }
 inline float from_bfloat16(std::uint16_t h) { return std::bit_cast<float>(static_cast<std::uint32_t>(h) << 16); }
 
-// supernodal_solve on a bfloat16 copy of the factor, in float arithmetic: a quarter of the double factor's memory
-// traffic. It solves exactly (up to float round-off) with L~ L~^T, L~ the factor rounded to bfloat16, so it is
-// the inverse of a symmetric positive-definite matrix within about 4e-3 of A on the benchmark cylinders' rest
-// matrices (docs/simulation.md): a preconditioner or quasi-Newton initial Hessian, never a solution. Each
-// supernode's rows are gathered into t (n rows x R, interleaved), its columns applied as contiguous axpys
-// (forward) and dot products (backward), and scattered back. w: n x R work, interleaved; t: (max rows) x R.
-//
-// A supernode's rows of w gathered into t; with `spill`, the rows from `bound` on start from 0 instead (their
-// updates go to spill). Returns how many rows come from w.
+// A supernode's rows of w (interleaved, n x R) gathered into t, one plane of nsrow rows per right-hand side
+// (t[r * nsrow + i]: contiguous rows, which the kernels' loops vectorise); with `spill`, the rows from `bound` on
+// start from 0 instead (their updates go to spill). Returns how many rows come from w.
 template <int R>
 [[gnu::always_inline]] inline int gather_rows(const int* srows, int nsrow, const float* w, float* t, int bound,
                                               const float* spill) {
   const int inside = spill ? static_cast<int>(std::lower_bound(srows, srows + nsrow, bound) - srows) : nsrow;
   for (int i = 0; i < inside; ++i)
-    for (int r = 0; r < R; ++r) t[R * i + r] = w[R * srows[i] + r];
+    for (int r = 0; r < R; ++r) t[r * nsrow + i] = w[R * srows[i] + r];
   for (int i = inside; i < nsrow; ++i)
-    for (int r = 0; r < R; ++r) t[R * i + r] = 0.0f;
+    for (int r = 0; r < R; ++r) t[r * nsrow + i] = 0.0f;
   return inside;
 }
 // t scattered back: the first `inside` rows to w, the others added to spill.
@@ -162,11 +156,18 @@ template <int R>
 [[gnu::always_inline]] inline void scatter_rows(const int* srows, int nsrow, int inside, const float* t, float* w,
                                                 float* spill) {
   for (int i = 0; i < inside; ++i)
-    for (int r = 0; r < R; ++r) w[R * srows[i] + r] = t[R * i + r];
+    for (int r = 0; r < R; ++r) w[R * srows[i] + r] = t[r * nsrow + i];
   for (int i = inside; i < nsrow; ++i)
-    for (int r = 0; r < R; ++r) spill[R * srows[i] + r] += t[R * i + r];
+    for (int r = 0; r < R; ++r) spill[R * srows[i] + r] += t[r * nsrow + i];
 }
 
+// supernodal_solve on a bfloat16 copy of the factor, in float arithmetic: a quarter of the double factor's memory
+// traffic. It solves exactly (up to float round-off) with L~ L~^T, L~ the factor rounded to bfloat16, so it is
+// the inverse of a symmetric positive-definite matrix within about 4e-3 of A on the benchmark cylinders' rest
+// matrices (docs/simulation.md): a preconditioner or quasi-Newton initial Hessian, never a solution. Each
+// supernode's rows are gathered into t (gather_rows), its columns applied as contiguous axpys (forward) and dot
+// products (backward), and scattered back. w: n x R work, interleaved; t: (max rows) x R.
+//
 // L y = P b at supernode s. With `spill` (the second group of a split), the rows from `bound` on (the top's) start
 // from 0 and their updates are added to spill instead of w, which the first group writes at the same time.
 template <int R>
@@ -177,12 +178,11 @@ template <int R>
   const int inside = gather_rows<R>(srows, nsrow, w, t, bound, spill);
   for (int j = 0; j < nsc; ++j) {
     const std::uint16_t* col = lx + f.px[s] + static_cast<std::ptrdiff_t>(j) * nsrow;
-    float y[R];
     const float d = from_bfloat16(col[j]);
-    for (int r = 0; r < R; ++r) y[r] = t[R * j + r] /= d;
-    for (int i = j + 1; i < nsrow; ++i) {
-      const float v = from_bfloat16(col[i]);
-      for (int r = 0; r < R; ++r) t[R * i + r] -= v * y[r];
+    for (int r = 0; r < R; ++r) {
+      float* tr = t + r * nsrow;
+      const float y = tr[j] /= d;
+      for (int i = j + 1; i < nsrow; ++i) tr[i] -= from_bfloat16(col[i]) * y;
     }
   }
   scatter_rows<R>(srows, nsrow, inside, t, w, spill);
@@ -194,27 +194,26 @@ template <int R>
                                                      float* t) {
   const int nsc = f.super[s + 1] - f.super[s], nsrow = f.pi[s + 1] - f.pi[s];
   const int* srows = f.rows + f.pi[s];
-  for (int i = 0; i < nsrow; ++i)
-    for (int r = 0; r < R; ++r) t[R * i + r] = w[R * srows[i] + r];
+  gather_rows<R>(srows, nsrow, w, t, 0, nullptr);
   for (int j = nsc - 1; j >= 0; --j) {
     const std::uint16_t* col = lx + f.px[s] + static_cast<std::ptrdiff_t>(j) * nsrow;
-    // kLanes partial sums: float addition is not associative, so one running sum would not vectorise.
-    constexpr int kLanes = 16;
-    float lanes[R][kLanes] = {};
-    int i = j + 1;
-    for (; i + kLanes <= nsrow; i += kLanes)
-      for (int r = 0; r < R; ++r)
-        for (int q = 0; q < kLanes; ++q) lanes[r][q] += from_bfloat16(col[i + q]) * t[R * (i + q) + r];
-    float sum[R] = {};
-    for (; i < nsrow; ++i)
-      for (int r = 0; r < R; ++r) sum[r] += from_bfloat16(col[i]) * t[R * i + r];
-    for (int r = 0; r < R; ++r)
-      for (int q = 0; q < kLanes; ++q) sum[r] += lanes[r][q];
     const float d = from_bfloat16(col[j]);
-    for (int r = 0; r < R; ++r) t[R * j + r] = (t[R * j + r] - sum[r]) / d;
+    for (int r = 0; r < R; ++r) {
+      float* tr = t + r * nsrow;
+      // kLanes partial sums: float addition is not associative, so one running sum would not vectorise.
+      constexpr int kLanes = 16;
+      float lanes[kLanes] = {};
+      int i = j + 1;
+      for (; i + kLanes <= nsrow; i += kLanes)
+        for (int q = 0; q < kLanes; ++q) lanes[q] += from_bfloat16(col[i + q]) * tr[i + q];
+      float sum = 0.0f;
+      for (; i < nsrow; ++i) sum += from_bfloat16(col[i]) * tr[i];
+      for (int q = 0; q < kLanes; ++q) sum += lanes[q];
+      tr[j] = (tr[j] - sum) / d;
+    }
   }
-  for (int j = 0; j < nsc; ++j)
-    for (int r = 0; r < R; ++r) w[R * srows[j] + r] = t[R * j + r];
+  for (int c = 0; c < nsc; ++c)
+    for (int r = 0; r < R; ++r) w[R * srows[c] + r] = t[r * nsrow + c];
 }
 
 // The supernode kernels compiled twice: for the baseline x86-64 (SSE2) and for AVX2, picked at run time. Without
