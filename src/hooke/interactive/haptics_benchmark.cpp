@@ -7,6 +7,7 @@
 #include <hooke/interactive/haptics_benchmark.hpp>
 #include <hooke/interactive/multirate.hpp>
 #include <sstream>
+#include <string>
 #include <thread>
 
 namespace hooke::interactive {
@@ -38,6 +39,16 @@ double median_step(LiveSimulation& sim, int steps, double speed) {
     t.push_back(std::chrono::duration<double>(Clock::now() - a).count());
   }
   return experiments::quantile(t, 0.5);
+}
+
+// run(), its solver failure prefixed with the mesh and the run it stopped (the table has several per mesh).
+template <class F>
+auto in_run(int nodes, const std::string& which, F&& run) {
+  try {
+    return run();
+  } catch (const SolverFailure& e) {
+    throw SolverFailure(std::to_string(nodes) + " nodes, " + which + ": " + e.what());
+  }
 }
 
 // The reference's force at wall time t: its sample nearest t.
@@ -80,7 +91,8 @@ HapticsBenchmarkReport run_haptics_benchmark(const HapticsBenchmarkOptions& o) {
       if (estimate <= o.reference_budget) {
         LiveSimulation fresh = make_simulation(m, o, h);
         const auto t0 = Clock::now();
-        reference = full_rate_force(fresh, device, duration);
+        reference = in_run(m.node_count(), "the full-rate reference (dt " + std::to_string(1e3 * h) + " ms)",
+                           [&] { return full_rate_force(fresh, device, duration); });
         row.reference_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
       } else {
         std::ostringstream note;
@@ -95,7 +107,12 @@ HapticsBenchmarkReport run_haptics_benchmark(const HapticsBenchmarkOptions& o) {
         HapticsBenchmarkOptions oo = o;
         if (held) oo.stiffness = HapticStiffness::kNone;
         LiveSimulation sim = make_simulation(m, oo, dt);
-        const double e = relative_force_error(multirate_force(sim, device, duration, h), reference);
+        const double e =
+            relative_force_error(in_run(m.node_count(),
+                                        std::string(held ? "the held-force" : "the multirate") +
+                                            " schedule (deformation dt " + std::to_string(1e3 * dt) + " ms)",
+                                        [&] { return multirate_force(sim, device, duration, h); }),
+                                 reference);
         (held ? row.held_error : row.schedule_error) = e;
       }
     }
