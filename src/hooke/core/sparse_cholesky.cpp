@@ -2,8 +2,10 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
-#include <immintrin.h>
 #include <omp.h>
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -245,8 +247,7 @@ template <int R>
                                                     float* t) {
   bfloat16_backward<R>(f, lx, s, w, t);
 }
-#endif
-#if defined(__x86_64__) && defined(__GNUC__)
+
 // One right-hand side with AVX2 and FMA, by hand (GCC's vectoriser gathers the 16-bit values one by one when
 // several columns share a loop): kBlock columns at a time, so that each row below them is loaded and stored once
 // for all of them (forward) or loaded once for their kBlock dot products (backward). 34 275 DOFs (the 11 425-node
