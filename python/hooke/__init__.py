@@ -63,8 +63,8 @@ class ValidityWarning(UserWarning):
 
 
 def tetrahedralize(surface, **options):
-    """Fills the closed triangle surface `surface` (hooke.Mesh, m) with tets (Netgen or TetGen), after checking it is closed,
-    manifold and not crossing itself (errors name the element). docs/meshing.md.
+    """Fills the closed triangle surface `surface` (hooke.Mesh, m) with tets (Netgen or TetGen), after checking it is
+    closed, manifold and not crossing itself (errors name the element). docs/meshing.md.
 
     options (keywords; the library's defaults otherwise):
     mesher             "netgen" (default, linked) or "tetgen" (TetGen's program on files, never linked)
