@@ -344,7 +344,7 @@ struct NewtonSolver::Impl {
         delta = -grad;
         slope = -grad.squaredNorm();
       }
-      if (delta.cwiseAbs().maxCoeff() <= opt.step_tolerance * f.size()) {  // below round-off: nothing more to gain
+      if (is_round_off_step(delta, opt, f.size())) {
         y += delta;
         f.gradient(y, grad);
         r.residual = grad.norm();

@@ -54,6 +54,12 @@ struct NewtonOptions {
   bool refine_approximate_steps = true;
 };
 
+/// True when `step` moves no DOF by more than `options.step_tolerance` x `size` (m, the body's size): round-off,
+/// nothing more to gain (Newton's and quasi-Newton's shared stopping test).
+inline bool is_round_off_step(const Eigen::Ref<const VecX>& step, const NewtonOptions& options, double size) {
+  return step.cwiseAbs().maxCoeff() <= options.step_tolerance * size;
+}
+
 /// What one Newton solve did.
 struct NewtonReport {
   int iterations = 0;          ///< Newton iterations

@@ -27,9 +27,6 @@ namespace {
 // costs c x DOFs per solve.
 constexpr int kMaxCorrectedDofs = 96;
 
-// A direction this small relative to the body's size is round-off: Newton's own step test.
-const double kRoundOffStep = NewtonOptions{}.step_tolerance;
-
 class QuasiNewtonStep final : public IntegratorStep {
  public:
   QuasiNewtonStep(SimulationState& s, const SimulatorOptions& options)
@@ -93,7 +90,7 @@ class QuasiNewtonStep final : public IntegratorStep {
       // Newton's round-off test (NewtonOptions::step_tolerance): a direction below 1e-13 of the body's size has
       // nothing more to gain. A body at rest with no load starts there: its gradient is round-off, which no
       // tolerance relative to that same gradient can be met by.
-      if (m_dir.cwiseAbs().maxCoeff() <= kRoundOffStep * m_objective.size()) {
+      if (is_round_off_step(m_dir, NewtonOptions{}, m_objective.size())) {
         at_round_off = true;
         break;
       }
