@@ -100,6 +100,8 @@ TEST(Tetrahedralize, RefusalsNameTheCause) {
   EXPECT_NE(error_of(cube_surface(3, 1.0), strict).find("quality floor"), std::string::npos);
   EXPECT_THROW(surface_meshing_from_name("smooth"), InvalidArgument);
   EXPECT_NEAR(edge_of_regular_tet(std::pow(0.1, 3) / (6.0 * std::sqrt(2.0))), 0.1, 1e-15);
+  EXPECT_NEAR(regular_tet_volume(0.1), std::pow(0.1, 3) / (6.0 * std::sqrt(2.0)), 1e-18);
+  EXPECT_NEAR(edge_of_regular_tet(regular_tet_volume(0.037)), 0.037, 1e-15);
 }
 
 TEST(Tetrahedralize, RealFemurScan) {

@@ -307,7 +307,7 @@ constexpr int kBlock = 4;
                                                        float* t) {
   const int nsc = f.super[s + 1] - f.super[s], nsrow = f.pi[s + 1] - f.pi[s];
   const int* srows = f.rows + f.pi[s];
-  for (int i = 0; i < nsrow; ++i) t[i] = w[srows[i]];
+  gather_rows<1>(srows, nsrow, w, t, 0, nullptr);
   const std::uint16_t* x = lx + f.px[s];
   int j = nsc - 1;
   for (; j >= 0 && (j + 1) % kBlock != 0; --j) {  // the last nsc % kBlock columns one at a time

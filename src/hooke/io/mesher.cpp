@@ -4,7 +4,6 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -63,7 +62,7 @@ std::string tail(const fs::path& path, std::size_t count) {
   return out;
 }
 
-// Runs `args` (args[0] looked up on PATH) in `dir`, its output to `log`; returns the exit status.
+// Runs `args` (args[0] looked up on PATH), its output to `log`; returns the exit status.
 int run_program(const std::vector<std::string>& args, const fs::path& log) {
   std::vector<char*> argv;
   std::vector<std::string> copy = args;
@@ -95,6 +94,11 @@ std::string general(double v) {
   return buffer;
 }
 
+// TetGen's switches for a piecewise linear complex kept as it is, with hooke's quality targets: "-pYq1.414/10".
+std::string quality_switches() {
+  return "-pYq" + general(mesh::kTetgenRadiusEdge) + "/" + general(mesh::kTetgenMinDihedralDegrees);
+}
+
 // TetGen on files: the surface as OFF, -p (a piecewise linear complex), -Y (its triangles kept: no Steiner point
 // on the surface), -q (quality targets), -a (largest volume), -F (no .face/.edge files), -V (its statistics, for
 // the log on failure).
@@ -102,9 +106,7 @@ mesh::Mesh tetgen_volume(const mesh::Mesh& surface, const mesh::TetrahedralizeOp
   TemporaryFolder folder;
   const fs::path input = folder.path() / "surface.off";
   write_off(input, surface);
-  const double volume = std::pow(o.max_size, 3) / (6.0 * std::sqrt(2.0));  // the regular tet of edge max_size
-  const std::string switches = "-pYq" + general(mesh::kTetgenRadiusEdge) + "/" +
-                               general(mesh::kTetgenMinDihedralDegrees) + "a" + general(volume) + "FV";
+  const std::string switches = quality_switches() + "a" + general(mesh::regular_tet_volume(o.max_size)) + "FV";
   const fs::path log = folder.path() / "tetgen.log";
   const int status = run_program({"tetgen", switches, input.string()}, log);
   const fs::path ele = folder.path() / "surface.1.ele";
@@ -128,9 +130,7 @@ mesh::Mesh tetgen_volume(const mesh::Mesh& surface, const mesh::TetrahedralizeOp
 
 mesh::VolumeMesher volume_mesher(mesh::Mesher mesher) {
   if (mesher == mesh::Mesher::kNetgen) return mesh::netgen_mesher();
-  return {"tetgen 1.5 (program tetgen -pYq" + general(mesh::kTetgenRadiusEdge) + "/" +
-              general(mesh::kTetgenMinDihedralDegrees) + ")",
-          tetgen_volume};
+  return {"tetgen 1.5 (program tetgen " + quality_switches() + ")", tetgen_volume};
 }
 
 mesh::Mesh tetrahedralize(mesh::Mesh surface, const mesh::TetrahedralizeOptions& options,

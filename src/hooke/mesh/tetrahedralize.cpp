@@ -188,6 +188,8 @@ double edge_of_regular_tet(double volume) {
   return std::cbrt(6.0 * std::sqrt(2.0) * volume);
 }
 
+double regular_tet_volume(double edge) { return edge * edge * edge / (6.0 * std::sqrt(2.0)); }
+
 void set_mesh_size(TetrahedralizeOptions& options, double max_edge, double max_volume) {
   if (max_edge != 0.0 && max_volume != 0.0) throw InvalidArgument("give a largest tet edge or volume, not both");
   if (max_edge < 0.0 || !std::isfinite(max_edge))

@@ -113,6 +113,10 @@ Mesh tetrahedralize(Mesh surface, const TetrahedralizeOptions& options, Tetrahed
 /// @pre volume > 0
 double edge_of_regular_tet(double volume);
 
+/// The volume (m^3) of the regular tet of edge `edge` (m), edge^3 / (6 sqrt(2)): the inverse of
+/// edge_of_regular_tet, TetGen's volume bound (-a) for a largest edge. @pre edge > 0
+double regular_tet_volume(double edge);
+
 /// Sets options.max_size from the largest tet edge `max_edge` (m) or the largest tet volume `max_volume` (m^3),
 /// whichever is not 0 (both 0: left as it is). @throws InvalidArgument when both are given or one is negative
 void set_mesh_size(TetrahedralizeOptions& options, double max_edge, double max_volume);
