@@ -4,6 +4,8 @@
 // with them fixed.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/fem/elastic_block.hpp>
@@ -16,11 +18,11 @@ namespace hooke::solve {
 namespace {
 
 struct Column {
-  mesh::Mesh mesh = mesh::tet_box(0.02, 0.02, 0.04, 2, 2, 4);
+  mesh::Mesh mesh;
   std::shared_ptr<const model::Model> model;
   VecX mass;
   std::vector<int> bottom, top;
-  explicit Column(const std::string& method) {
+  explicit Column(const std::string& method) : mesh(mesh::tet_box(0.02, 0.02, 0.04, 2, 2, 4)) {
     if (method == "fem-stvk") {
       auto m = std::make_shared<model::Model>(3, Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size()));
       m->add(fem::make_elastic_block(mesh, {material::Law::kStVK, 14630.0, 0.45}));
@@ -126,6 +128,48 @@ TEST(QuasiNewton, GrabbingNodesEqualsFactorisingWithThemFixed) {
     EXPECT_EQ(r.iterations, 1);
     for (int node : c.top)
       EXPECT_EQ((grabbed.positions().segment<3>(3 * node) - target.segment<3>(3 * node)).norm(), 0.0);
+  }
+}
+
+// A deformation step of a multirate haptic loop is long (a second on 100 k nodes), and the probe moves far in it:
+// here a patch of the top (radius 3.5 mm) is dragged sideways by more than its neighbouring tets are wide in one
+// step. Moving only the held nodes inverts their neighbours, and so does one solve with H0 from there; the step must
+// stay admissible and, held there, settle where a gradual drag (a tenth per step) settles.
+TEST(QuasiNewton, AProbeJumpWiderThanAnElementCarriesIntoTheBody) {
+  const mesh::Mesh m = mesh::tet_cylinder(0.01, 0.02, 12, 8);
+  calibrate::ModelOptions mo;
+  mo.method = "any-nu-tet";
+  mo.density = 1000.0;
+  const auto model =
+      calibrate::build_model(calibrate::calibrate_model(m, {material::Law::kLinear, 14630.0, 0.45}, mo)).model;
+  std::vector<int> bottom, patch;
+  for (int i = 0; i < m.node_count(); ++i) {
+    if (m.nodes(i, 2) == 0.0) bottom.push_back(i);
+    if (m.nodes(i, 2) > 0.02 - 1e-12 && std::hypot(m.nodes(i, 0), m.nodes(i, 1)) <= 0.0035) patch.push_back(i);
+  }
+  const double jump = 4e-3;
+  for (QuasiNewtonHessian h : {QuasiNewtonHessian::kRest, QuasiNewtonHessian::kIsotropic}) {
+    SimulatorOptions o;
+    o.integrator = Integrator::kQuasiNewton;
+    o.quasi_newton.initial_hessian = h;
+    o.quasi_newton.max_iterations = 40;
+    const Dynamics dyn{model::lumped_masses(m, 1000.0), Vec3(0.0, 0.0, -9.81), 20.0, 0.0};
+    const auto dragged = [&](int ramp_steps) {
+      model::Problem p = model::make_problem(model);
+      model::fix_nodes(p, bottom);
+      Simulator sim(std::move(p), dyn, o);
+      sim.step(1.0);  // factorised, settled under gravity
+      for (int k = 1; k <= 30; ++k) {
+        const double x = jump * std::min(1.0, static_cast<double>(k) / ramp_steps);
+        sim.set_probe({patch, true, Vec3(x, 0.0, 0.0), VecX()});
+        sim.step(1.0);
+        EXPECT_TRUE(std::isfinite(sim.potential_energy())) << "step " << k << " of a " << ramp_steps << "-step drag";
+      }
+      return sim.positions();
+    };
+    const VecX once = dragged(1), gradual = dragged(10);
+    const double scale = (gradual - model->rest_positions()).cwiseAbs().maxCoeff();
+    EXPECT_LT((once - gradual).cwiseAbs().maxCoeff(), 1e-4 * scale);
   }
 }
 

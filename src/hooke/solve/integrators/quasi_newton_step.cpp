@@ -60,25 +60,43 @@ class QuasiNewtonStep final : public IntegratorStep {
     m_refix = false;
     m_objective.begin(1.0 / (dt * dt), dt);
     m_y = m_objective.inertial_target();
-    double phi = m_objective.value_and_gradient(m_y, m_grad);
-    if (!std::isfinite(phi)) {  // x_hat inverts an element: start from where the body is
+    m_phi = m_objective.value_and_gradient(m_y, m_grad);
+    m_gradient_at_y = true;  // the objective's last gradient() was at m_y (the probe force reuses it)
+    m_at_round_off = false;
+    StepReport r;
+    if (!std::isfinite(m_phi)) {  // x_hat inverts an element: start from where the body is
       m_y = s.x;
       s.apply_prescribed(m_y);
-      phi = m_objective.value_and_gradient(m_y, m_grad);
+      m_phi = m_objective.value_and_gradient(m_y, m_grad);
+      if (!std::isfinite(m_phi)) carry_jump(r);  // the held nodes jumped further than their neighbours reach
     }
-    bool gradient_at_y = true;  // the objective's last gradient() was at m_y (the probe force reuses it)
-    StepReport r;
+    r.iterations += minimise();
+    r.residual = m_grad.norm();
+    r.converged = done(r.residual);
+    s.advance(m_y, dt);
+    if (m_gradient_at_y) {  // the probe force without another gradient evaluation
+      s.fixed_grad = m_objective.fixed_model_gradient();
+      s.fixed_grad_valid = true;
+    }
+    return r;
+  }
+
+ private:
+  // Converged: the residual within the tolerance of the step's force scale, or the round-off step test met. An
+  // overflowing load (a force of 1e300 N) makes the scale infinite, and every residual would pass the test.
+  bool done(double residual) const {
+    return m_at_round_off || (std::isfinite(residual) && std::isfinite(m_objective.force_scale()) &&
+                              residual <= m_opt.tolerance * m_objective.force_scale());
+  }
+
+  // L-BFGS from m_y (objective m_phi, gradient m_grad there) with the fixed DOFs where m_y has them, until done()
+  // or the iteration budget; returns the iterations taken.
+  int minimise() {
     double residual = m_grad.norm();
     const bool conservative = m_objective.conservative();
     int it = 0;
-    bool at_round_off = false;  // set by the round-off step test below
-    // An overflowing load (a force of 1e300 N) makes the scale infinite, and every residual would pass the test.
-    const auto done = [&] {
-      return at_round_off || (std::isfinite(residual) && std::isfinite(m_objective.force_scale()) &&
-                              residual <= m_opt.tolerance * m_objective.force_scale());
-    };
     for (; it < m_opt.max_iterations; ++it) {
-      if (done() || !std::isfinite(residual * m_objective.force_scale())) break;
+      if (done(residual) || !std::isfinite(residual * m_objective.force_scale())) break;
       two_loop();
       double slope = m_grad.dot(m_dir);
       if (!(slope < 0.0)) {  // the history gives no descent: start it again from H0
@@ -91,45 +109,104 @@ class QuasiNewtonStep final : public IntegratorStep {
       // nothing more to gain. A body at rest with no load starts there: its gradient is round-off, which no
       // tolerance relative to that same gradient can be met by.
       if (is_round_off_step(m_dir, NewtonOptions{}, m_objective.size())) {
-        at_round_off = true;
+        m_at_round_off = true;
         break;
       }
       // Backtracking from the full step: Armijo on phi, or a smaller residual where the forces have no potential.
-      double alpha = 1.0, phi_trial = phi;
+      double alpha = 1.0, phi_trial = m_phi;
       bool accepted = false;
       for (int ls = 0; ls < 30 && !accepted; ++ls, alpha *= 0.5) {
         m_trial = m_y + alpha * m_dir;
         if (conservative) {  // the gradient with the energy, in one pass: the full step is nearly always taken
           phi_trial = m_objective.value_and_gradient(m_trial, m_grad_trial);
-          gradient_at_y = false;  // until the trial is accepted
+          m_gradient_at_y = false;  // until the trial is accepted
           if (!std::isfinite(phi_trial)) continue;
-          accepted = phi_trial <= phi + 1e-4 * alpha * slope || std::abs(phi_trial - phi) <= 1e-13 * std::abs(phi);
+          accepted =
+              phi_trial <= m_phi + 1e-4 * alpha * slope || std::abs(phi_trial - m_phi) <= 1e-13 * std::abs(m_phi);
         } else {
           m_objective.gradient(m_trial, m_grad_trial);
           accepted = std::isfinite(m_grad_trial.norm()) && m_grad_trial.norm() < (1.0 - 1e-4 * alpha) * residual;
-          gradient_at_y = false;  // until the trial is accepted
+          m_gradient_at_y = false;  // until the trial is accepted
         }
       }
       if (!accepted) break;
       push_pair();
-      gradient_at_y = true;  // at the accepted trial, the new m_y
+      m_gradient_at_y = true;  // at the accepted trial, the new m_y
       m_y.swap(m_trial);
       m_grad.swap(m_grad_trial);
-      phi = phi_trial;
+      m_phi = phi_trial;
       residual = m_grad.norm();
     }
-    r.iterations = it;
-    r.residual = residual;
-    r.converged = done();
-    s.advance(m_y, dt);
-    if (gradient_at_y) {  // the probe force without another gradient evaluation
-      s.fixed_grad = m_objective.fixed_model_gradient();
-      s.fixed_grad_valid = true;
-    }
-    return r;
+    return it;
   }
 
- private:
+  // m_y has the fixed DOFs at their targets and inverts an element. The jump J of the fixed DOFs (targets minus
+  // where they are) is carried into the body in stages: each moves them by a fraction of J together with its linear
+  // extension into the free DOFs (add_extension) and minimises there; a stage whose start inverts an element is
+  // halved. The last stage leaves the fixed DOFs exactly at their targets for the step's own minimisation.
+  // Without it a grab that moves further in one deformation step than the tets beside it are wide (a multirate
+  // haptic loop's step of a second on 100 k nodes) leaves the body inverted for good.
+  void carry_jump(StepReport& r) {
+    const VecX target = m_y;
+    m_y = m_s.x;
+    m_phi = m_objective.value_and_gradient(m_y, m_grad);
+    if (!std::isfinite(m_phi)) {  // inverted already: nothing to carry from
+      m_y = target;
+      m_phi = m_objective.value_and_gradient(m_y, m_grad);
+      return;
+    }
+    m_jump = target - m_y;  // zero on the free DOFs
+    double reached = 0.0, stage = 1.0;
+    while (reached < 1.0 && stage >= 1.0 / 1024.0) {
+      const double to = std::min(1.0, reached + stage);
+      m_trial = m_y;
+      add_extension((to - reached) * m_jump, m_trial);
+      if (to == 1.0) m_s.apply_prescribed(m_trial);  // exactly, not to round-off
+      const double phi = m_objective.value_and_gradient(m_trial, m_grad_trial);
+      m_gradient_at_y = false;
+      if (!std::isfinite(phi)) {
+        stage *= 0.5;
+        continue;
+      }
+      m_y.swap(m_trial);
+      m_grad.swap(m_grad_trial);
+      m_phi = phi;
+      m_gradient_at_y = true;
+      reached = to;
+      if (reached < 1.0) {
+        r.iterations += minimise();
+        m_at_round_off = false;  // of this stage, not of the step
+      }
+    }
+    if (reached < 1.0) {  // the step's own minimisation reports what is left (an inverted element)
+      m_y = target;
+      m_phi = m_objective.value_and_gradient(m_y, m_grad);
+      m_gradient_at_y = true;
+    }
+  }
+
+  // z += the linear extension of a move dj of the fixed DOFs (dj zero on the free ones): dj itself on the fixed DOFs
+  // and -H0_ff^-1 H0_fh dj on the free ones, the free DOFs' response to it under H0 (H0_fh from the rest stiffness;
+  // the masses are diagonal).
+  void add_extension(const VecX& dj, VecX& z) {
+    const SparseMatrix& k = m_s.rest_stiffness();
+    const int d = m_s.model().dim(), r = m_components;
+    m_q.setZero();
+    for (Eigen::Index col = 0; col < m_s.nd; ++col) {
+      if (!m_s.fixed(col) || dj(col) == 0.0) continue;
+      for (SparseMatrix::InnerIterator it(k, col); it; ++it) {
+        if (m_s.fixed(it.row())) continue;
+        if (r == 1) {
+          m_q(it.row()) -= m_k_weight * it.value() * dj(col);
+        } else if (it.row() % d == col % d) {  // Kronecker form: the node pair's trace acts on every axis
+          const Eigen::Index u = it.row() / d, c = col / d;
+          for (int a = 0; a < d; ++a) m_q(d * u + a) -= m_k_weight * it.value() * dj(d * c + a);
+        }
+      }
+    }
+    apply_h0_inverse(m_q);
+    z += m_q + dj;
+  }
   // H0 on the current fixed DOFs (identity rows and columns there), factorised. kRest: the Newton matrix at rest,
   // its PSD projection where the exact one is not positive definite (negative volume terms of an indefinite
   // assembly, prestrain). kIsotropic: one per-node matrix for all axes (Kronecker form, like local/global's), each
@@ -167,6 +244,7 @@ class QuasiNewtonStep final : public IntegratorStep {
       }
       constrain(h, fixed, m_components);
       if (m_factor.factorize(h)) {
+        m_k_weight = kronecker ? k_factor * m_opt.isotropic_scale / d : k_factor;
         m_dt = dt;
         m_factor_fixed = fixed;
         m_held.clear();
@@ -263,6 +341,7 @@ class QuasiNewtonStep final : public IntegratorStep {
   SparseCholesky m_factor;  // of H0 with m_factor_fixed's rows and columns those of the identity
   std::vector<char> m_factor_fixed;
   double m_dt = -1.0;
+  double m_k_weight = 1.0;  // H0's off-diagonal entries over the rest stiffness's (Kronecker form: per trace)
   bool m_refix = false;
   int m_components = 1;            // 1: H0 acts on DOFs; dim: one per-node matrix for all axes (Kronecker)
   std::vector<int> m_held;         // unknowns fixed since the factorisation (the capacitance correction's E)
@@ -272,7 +351,10 @@ class QuasiNewtonStep final : public IntegratorStep {
   MatX m_s_hist, m_y_hist;         // DOFs x history, a ring
   VecX m_rho, m_alpha;
   int m_pairs = 0, m_newest = -1;
-  VecX m_y, m_trial, m_grad, m_grad_trial, m_dir, m_q;
+  VecX m_y, m_trial, m_grad, m_grad_trial, m_dir, m_q, m_jump;
+  double m_phi = 0.0;           // the objective at m_y
+  bool m_gradient_at_y = true;  // m_objective's last gradient was at m_y (the probe force reuses it)
+  bool m_at_round_off = false;  // the round-off step test was met
 };
 
 }  // namespace
