@@ -120,6 +120,7 @@ HapticsBenchmarkReport run_haptics_benchmark(const HapticsBenchmarkOptions& o) {
     {
       LiveSimulation sim = make_simulation(m, o, dt);
       sim.step();  // the first step at a new dt factorises: before the device moves, as a user grabs, then drags
+      sim.haptic_model();  // so does the condensed stiffness (kept until the next grab)
       PhysicsLoop physics(std::move(sim), true);
       HapticLoop haptics(
           physics, [&](double t) { return device.at(t); }, o.haptic_rate, true);

@@ -33,9 +33,9 @@ ForceTrace multirate_force(LiveSimulation& sim, const DeviceDrag& device, double
   const auto ticks = static_cast<Eigen::Index>(std::llround(duration / haptic_dt));
   ForceTrace out;
   out.force.resize(ticks, sim.model().mesh.dim());
-  HapticModel model;  // in use: the last finished step's (none before the first has finished)
   sim.drag(device.at(0.0));
-  sim.step();  // step 0: runs during [0, dt]
+  HapticModel model = sim.haptic_model();  // in use: the grab's until the first step has finished, then the last's
+  sim.step();                              // step 0: runs during [0, dt]
   for (Eigen::Index j = 1; j <= ticks; ++j) {
     const double t = static_cast<double>(j) * haptic_dt;
     if (j % ratio == 0) {  // the step started at t - dt has finished: its model takes over, the next step starts

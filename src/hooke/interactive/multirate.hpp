@@ -5,7 +5,9 @@
 /// the latency it has, so that tests and benchmarks can compare it with the same drag simulated at full rate.
 ///
 /// Schedule: deformation step k starts at t_k = k deformation_dt with the device's offset u(t_k), and its model is
-/// in use from t_k + deformation_dt (when a real-time step of that length has finished) until the next one.
+/// in use from t_k + deformation_dt (when a real-time step of that length has finished) until the next one. Before
+/// the first step has finished, the grab's model is in use (the force at the grab; the condensed stiffness is
+/// computed at the grab, the secant one has no pair yet and is zero).
 #include <hooke/interactive/live_simulation.hpp>
 #include <string>
 #include <vector>

@@ -307,8 +307,20 @@ void PhysicsLoop::run() {
   }
 }
 
+void PhysicsLoop::publish_haptic_model() {
+  if (!m_haptics) return;
+  try {
+    HapticModel model = m_sim.haptic_model();
+    std::lock_guard lock(m_haptic_mutex);
+    std::swap(m_haptic, model);
+  } catch (const std::exception& e) {
+    m_work_stats.error = std::string("haptic model: ") + e.what();
+  }
+}
+
 void PhysicsLoop::run_steps() {
   omp_set_num_threads(m_threads);  // this thread's parallel regions
+  publish_haptic_model();          // the grab's, before the first step ends
   StepClock clock;
   const Clock::time_point start = Clock::now();
   Clock::time_point next = start;
@@ -356,15 +368,7 @@ void PhysicsLoop::run_steps() {
       st.error = std::string(e.what()) + " (the simulation was reset)";
       m_sim.reset();
     }
-    if (m_haptics) {
-      try {
-        HapticModel model = m_sim.haptic_model();
-        std::lock_guard lock(m_haptic_mutex);
-        std::swap(m_haptic, model);
-      } catch (const std::exception& e) {
-        st.error = std::string("haptic model: ") + e.what();
-      }
-    }
+    publish_haptic_model();
     const Clock::time_point t1 = Clock::now();
     const double step_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
     const double period = m_sim.settings().dynamics.dt;

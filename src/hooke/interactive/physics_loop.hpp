@@ -89,7 +89,8 @@ class PhysicsLoop {
   /// The probe's offset for the next step, m (dim): a haptic device's position. Replaces one not yet taken (no
   /// queue: only the newest matters); ignored without a grab.
   void set_device_offset(const VecX& offset);
-  /// The local model after the last step (version 0 before the first, or without enable_haptics()). Takes only a
+  /// The local model after the last step (before the first: the one the thread published when it started, that of
+  /// the state it started from; version 0 without enable_haptics()). Takes only a
   /// lock of its own, never held for longer than a copy of dim + dim^2 numbers.
   HapticModel haptic_model() const;
 
@@ -107,10 +108,11 @@ class PhysicsLoop {
   bool script_finished() const;  ///< every command has been carried out
 
  private:
-  void run();        // the thread: run_steps, with any exception reported in PhysicsStats::error
-  void run_steps();  // the loop
-  void stage();      // copies the simulation's state into m_staging (physics thread, m_sim_mutex held)
-  void publish();    // m_staging becomes the latest snapshot (takes m_mutex)
+  void run();                   // the thread: run_steps, with any exception reported in PhysicsStats::error
+  void run_steps();             // the loop
+  void publish_haptic_model();  // the probe's local model for the haptic loop, after enable_haptics()
+  void stage();                 // copies the simulation's state into m_staging (physics thread, m_sim_mutex held)
+  void publish();               // m_staging becomes the latest snapshot (takes m_mutex)
   void run_commands(std::deque<std::function<void(LiveSimulation&)>>& commands);
   bool run_script_commands();                            // true when a drawing command waits for the front end
   std::unique_lock<std::mutex> lock_simulation() const;  // m_sim_mutex, let in by the physics thread

@@ -1,3 +1,4 @@
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <hooke/core/error.hpp>
 #include <hooke/core/sparse_cholesky.hpp>
@@ -60,48 +61,67 @@ MatX contact_stiffness(const SparseMatrix& k, const std::vector<char>& fixed, co
       if (held[static_cast<size_t>(dim * local[static_cast<size_t>(h)] + a)])
         throw InvalidArgument("contact_stiffness: held node " + std::to_string(h) +
                               " is on the region's boundary: make the region larger");
-  // K_rr on the region, the held DOFs' rows and columns those of the identity.
+  // The probe moves every held node by the same offset, so dim solves give K_c (not one per held DOF): for a unit
+  // offset along axis a, the region's free DOFs relax to u = -K_ff^-1 K_fh P e_a, and the probe's force is
+  // column a of K_c = P^T (K_hh P e_a + K_hf u), the Schur complement's definition applied to P e_a.
+  std::vector<char> probe(static_cast<size_t>(m), 0);
+  for (const int h : nodes)
+    for (int a = 0; a < dim; ++a) probe[static_cast<size_t>(dim * local[static_cast<size_t>(h)] + a)] = 1;
+  const auto local_dof = [&](Eigen::Index global) {  // -1 outside the region
+    const int node = local[static_cast<size_t>(global / dim)];
+    return node < 0 ? Eigen::Index{-1} : dim * static_cast<Eigen::Index>(node) + global % dim;
+  };
+  // K_ff on the region, the held and probe DOFs' rows and columns those of the identity.
   std::vector<Triplet> t;
   for (size_t r = 0; r < region.size(); ++r)
     for (int a = 0; a < dim; ++a) {
       const Eigen::Index c = dim * region[r] + a, lc = dim * static_cast<Eigen::Index>(r) + a;
-      if (held[static_cast<size_t>(lc)]) {
+      if (held[static_cast<size_t>(lc)] || probe[static_cast<size_t>(lc)]) {
         t.emplace_back(lc, lc, 1.0);
         continue;
       }
       for (SparseMatrix::InnerIterator it(k, c); it; ++it) {
-        const int node = local[static_cast<size_t>(it.row() / dim)];
-        if (node < 0) continue;
-        const Eigen::Index lr = dim * static_cast<Eigen::Index>(node) + it.row() % dim;
-        if (!held[static_cast<size_t>(lr)]) t.emplace_back(lr, lc, it.value());
+        const Eigen::Index lr = local_dof(it.row());
+        if (lr >= 0 && !held[static_cast<size_t>(lr)] && !probe[static_cast<size_t>(lr)])
+          t.emplace_back(lr, lc, it.value());
       }
     }
-  SparseMatrix krr(m, m);
-  krr.setFromTriplets(t.begin(), t.end());
+  SparseMatrix kff(m, m);
+  kff.setFromTriplets(t.begin(), t.end());
   SparseCholesky factor;
-  if (!factor.factorize(krr))
+  if (!factor.factorize(kff))
     throw SolverFailure(
         "contact_stiffness: the stiffness of the region around the held nodes is not positive "
         "definite (is the body held?)");
-  // C = E^T K_rr^-1 E over the held nodes' DOFs, then K_c = P^T C^-1 P.
-  const Eigen::Index c = dim * static_cast<Eigen::Index>(nodes.size());
-  MatX w = MatX::Zero(m, c);
-  for (size_t h = 0; h < nodes.size(); ++h)
-    for (int a = 0; a < dim; ++a)
-      w(dim * local[static_cast<size_t>(nodes[h])] + a, dim * static_cast<Eigen::Index>(h) + a) = 1.0;
-  for (Eigen::Index j = 0; j < c; ++j) factor.solve_in_place(w.col(j).data(), 1);
-  MatX cap(c, c);
-  for (size_t h = 0; h < nodes.size(); ++h)
-    for (int a = 0; a < dim; ++a)
-      cap.row(dim * static_cast<Eigen::Index>(h) + a) = w.row(dim * local[static_cast<size_t>(nodes[h])] + a);
-  cap = 0.5 * (cap + cap.transpose()).eval();
-  MatX p = MatX::Zero(c, dim);
-  for (size_t h = 0; h < nodes.size(); ++h) p.block(dim * static_cast<Eigen::Index>(h), 0, dim, dim).setIdentity();
-  const Eigen::LDLT<MatX> ldlt(cap);
-  if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().minCoeff() > 0.0))
-    throw SolverFailure("contact_stiffness: the held nodes' compliance is singular (nodes repeated?)");
-  MatX kc = p.transpose() * ldlt.solve(p);
-  return 0.5 * (kc + kc.transpose());
+  MatX kc(dim, dim), diagonal = MatX::Zero(dim, dim);
+  VecX u(m);
+  for (int a = 0; a < dim; ++a) {
+    u.setZero();
+    for (const int h : nodes)  // -K_fh P e_a
+      for (SparseMatrix::InnerIterator it(k, dim * static_cast<Eigen::Index>(h) + a); it; ++it) {
+        const Eigen::Index lr = local_dof(it.row());
+        if (lr >= 0 && !held[static_cast<size_t>(lr)] && !probe[static_cast<size_t>(lr)]) u(lr) -= it.value();
+      }
+    factor.solve_in_place(u.data(), 1);
+    for (const int h : nodes) u(dim * local[static_cast<size_t>(h)] + a) = 1.0;
+    for (int b = 0; b < dim; ++b) {
+      double f = 0.0;
+      for (const int h : nodes)  // symmetric k: row (h, b) read as its column
+        for (SparseMatrix::InnerIterator it(k, dim * static_cast<Eigen::Index>(h) + b); it; ++it) {
+          const Eigen::Index lr = local_dof(it.row());
+          if (lr < 0) continue;
+          f += it.value() * u(lr);
+          if (probe[static_cast<size_t>(lr)] && lr % dim == a) diagonal(b, a) += it.value();
+        }
+      kc(b, a) = f;
+    }
+  }
+  kc = 0.5 * (kc + kc.transpose()).eval();
+  // A body held by the probe alone follows it rigidly: K_c is singular against the held nodes' own stiffness.
+  const double own = (0.5 * (diagonal + diagonal.transpose())).norm();
+  if (!(Eigen::SelfAdjointEigenSolver<MatX>(kc).eigenvalues().minCoeff() > 1e-9 * own))
+    throw SolverFailure("contact_stiffness: the held nodes' stiffness is singular (is the body held?)");
+  return kc;
 }
 
 }  // namespace hooke::solve
