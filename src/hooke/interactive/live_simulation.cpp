@@ -61,12 +61,27 @@ struct LiveSimulation::Impl {
     last_force.resize(0);
   }
 
+  // The condensed rest stiffness at the grabbed nodes, computed at the first call after a grab or a rebuild.
+  const MatX& condensed() {
+    const int d = dim();
+    if (contact_stiffness.rows() != d) {
+      // The body as the clamp holds it (the simulator's fixed DOFs also hold the grabbed nodes).
+      const VecX& rest = built.model->rest_positions();
+      std::vector<char> clamp(static_cast<size_t>(rest.size()), 0);
+      for (const int i : clamped)
+        for (int a = 0; a < d; ++a) clamp[static_cast<size_t>(d * i + a)] = 1;
+      contact_stiffness =
+          solve::contact_stiffness(sim->rest_stiffness(), clamp, rest, d, probe.nodes, settings.haptic_region);
+    }
+    return contact_stiffness;
+  }
+
   // Powell-symmetric-Broyden: the smallest symmetric change of K with K s = y, s the probe's move over the step and
   // y minus the force's change; only for moves of at least 1 um along which the body pushed back (y . s > 0), then
   // projected onto the positive semidefinite matrices (a negative stiffness would feed energy into the device).
   void update_secant() {
     const int d = dim();
-    if (secant.rows() != d) secant = MatX::Zero(d, d);
+    if (secant.rows() != d) secant = condensed();
     if (last_offset.size() == d) {
       const VecX s = offset - last_offset, y = -(force - last_force);
       const double ss = s.squaredNorm();
@@ -236,19 +251,11 @@ HapticModel LiveSimulation::haptic_model() {
     return h;
   }
   if (m->settings.haptic_stiffness == HapticStiffness::kSecant) {
-    h.stiffness = m->secant.rows() == d ? m->secant : MatX::Zero(d, d);
+    if (m->secant.rows() != d) m->secant = m->condensed();  // at the grab, before a step has given a pair
+    h.stiffness = m->secant;
     return h;
   }
-  if (m->contact_stiffness.rows() != d) {
-    // The body as the clamp holds it (the simulator's fixed DOFs also hold the grabbed nodes).
-    const VecX& rest = m->built.model->rest_positions();
-    std::vector<char> clamp(static_cast<size_t>(rest.size()), 0);
-    for (const int i : m->clamped)
-      for (int a = 0; a < d; ++a) clamp[static_cast<size_t>(d * i + a)] = 1;
-    m->contact_stiffness =
-        solve::contact_stiffness(m->sim->rest_stiffness(), clamp, rest, d, m->probe.nodes, m->settings.haptic_region);
-  }
-  h.stiffness = m->contact_stiffness;
+  h.stiffness = m->condensed();
   return h;
 }
 
