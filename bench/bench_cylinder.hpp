@@ -4,7 +4,7 @@
 // `hooke bench`, from the library's model factory.
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/experiments/dynamics_benchmark.hpp>
-#include <hooke/experiments/load_case.hpp>
+#include <hooke/model/load_case.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <hooke/springs/spring_block.hpp>
 #include <memory>
@@ -24,7 +24,7 @@ struct Cylinder {
     model = calibrate::build_model(cm).model;
     springs = std::make_unique<springs::SpringBlock>(3, cm.springs.pairs, cm.springs.stiffness, cm.springs.rest_length);
     problem = model::make_problem(model);
-    model::fix_nodes(problem, experiments::make_load_case(mesh, experiments::LoadKind::kStretch, 0.0).fixed_nodes);
+    model::fix_nodes(problem, model::make_load_case(mesh, model::LoadKind::kStretch, 0.0).fixed_nodes);
     VecX g = VecX::Zero(3);
     g(2) = -9.81;
     dynamics = {cm.masses, g, 0.0, 0.0};

@@ -8,10 +8,10 @@
 #include <chrono>
 
 #include <hooke/core/sparse_cholesky.hpp>
-#include <hooke/experiments/load_case.hpp>
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/mesh/generators.hpp>
 #include <hooke/model/free_map.hpp>
+#include <hooke/model/load_case.hpp>
 #include <hooke/model/problem.hpp>
 #include <memory>
 
@@ -37,7 +37,7 @@ struct Setup {
     model = std::make_shared<model::Model>(3, Eigen::Map<const VecX>(mesh.nodes.data(), mesh.nodes.size()));
     model->add(fem::make_elastic_block(mesh, {material::Law::kLinear, 14630.0, 0.3}));
     problem = model::make_problem(model);
-    experiments::apply(experiments::make_load_case(mesh, experiments::LoadKind::kStretch, 1000.0), problem);
+    model::apply(model::make_load_case(mesh, model::LoadKind::kStretch, 1000.0), problem);
   }
 };
 

@@ -29,16 +29,16 @@
 #include <algorithm>
 #include <chrono>
 #include <hooke/calibrate/model_factory.hpp>
+#include <hooke/core/quantile.hpp>
 #include <hooke/experiments/dynamics_benchmark.hpp>
-#include <hooke/experiments/load_case.hpp>
-#include <hooke/experiments/simulation.hpp>
+#include <hooke/model/load_case.hpp>
 #include <memory>
 #include <vector>
 
 namespace {
 
 using namespace hooke;
-using experiments::quantile;
+using hooke::quantile;
 
 constexpr double kYoung = 14630.0, kPoisson = 0.45, kDensity = 1000.0, kDt = 1e-3;
 constexpr int kSteps = 300;
@@ -59,7 +59,7 @@ struct HookeCylinder {
     o.density = kDensity;
     cm = calibrate::calibrate_model(experiments::benchmark_cylinder(size), m, o);
     problem = model::make_problem(calibrate::build_model(cm).model);
-    model::fix_nodes(problem, experiments::make_load_case(cm.mesh, experiments::LoadKind::kStretch, 0.0).fixed_nodes);
+    model::fix_nodes(problem, model::make_load_case(cm.mesh, model::LoadKind::kStretch, 0.0).fixed_nodes);
     dynamics = {cm.masses, Vec3(0.0, 0.0, -9.81), 0.0, 0.0};
     probe = {experiments::benchmark_probe_nodes(cm.mesh), 2e-3, 0.5 * (kSteps + 1) * kDt};
   }

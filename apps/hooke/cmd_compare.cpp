@@ -75,7 +75,7 @@ int run_compare(const CompareCli& o) {
   const std::filesystem::path staging = o.out_dir.empty() ? std::filesystem::path() : outputs.stage_folder(o.out_dir);
   const calibrate::CalibratedModel model = load_model(o.in);
   experiments::CompareOptions co;
-  co.load = experiments::load_kind_from_name(o.load);
+  co.load = model::load_kind_from_name(o.load);
   co.reference = material::law_from_name(o.reference);
   co.traction_pa = std::isnan(o.traction) ? 0.0 : o.traction;
   co.strain = std::isnan(o.strain) ? 0.0 : o.strain;

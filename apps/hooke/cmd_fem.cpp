@@ -4,12 +4,13 @@
 #include <hooke/core/error.hpp>
 #include <hooke/core/output_transaction.hpp>
 #include <hooke/core/units.hpp>
-#include <hooke/experiments/load_case.hpp>
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/io/csv.hpp>
 #include <hooke/io/mesh_io.hpp>
 #include <hooke/io/vtu.hpp>
+#include <hooke/model/load_case.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
+#include <hooke/solve/strain_response.hpp>
 #include <memory>
 #include <string>
 
@@ -49,16 +50,15 @@ int run_fem(const FemOptions& o) {
   mat.thickness = o.in.thickness;
   mat.plane = material::plane_from_name(o.plane);
   material::validate(mat);
-  const experiments::LoadKind kind = experiments::load_kind_from_name(o.load);
+  const model::LoadKind kind = model::load_kind_from_name(o.load);
   if (std::isnan(o.traction) == std::isnan(o.strain))
     throw InvalidArgument("give exactly one of --traction and --strain");
-  const double traction =
-      std::isnan(o.strain) ? o.traction : experiments::traction_for_strain(m, {mat}, kind, o.strain);
+  const double traction = std::isnan(o.strain) ? o.traction : solve::traction_for_strain(m, {mat}, kind, o.strain);
 
   const auto model = fem::elastic_model(m, {mat});
   model::Problem problem = model::make_problem(model);
-  const experiments::LoadCase lc = experiments::make_load_case(m, kind, traction, mat.thickness);
-  experiments::apply(lc, problem);
+  const model::LoadCase lc = model::make_load_case(m, kind, traction, mat.thickness);
+  model::apply(lc, problem);
   const solve::StaticResult r =
       mat.law == material::Law::kLinear ? solve::linear_static(problem) : solve::static_equilibrium(problem);
   const solve::SolveReport& rep = r.report;
@@ -82,7 +82,7 @@ int run_fem(const FemOptions& o) {
   const VecX u = r.positions - model->rest_positions();
   double max_u = 0.0;
   for (int i = 0; i < m.node_count(); ++i) max_u = std::max(max_u, u.segment(m.dim() * i, m.dim()).norm());
-  const double mean_top = experiments::mean_top_displacement(lc, problem, r.positions);
+  const double mean_top = model::mean_top_displacement(lc, problem, r.positions);
   std::printf("  result    max displacement %.6g m, mean top displacement along the load %.6g m (%.2f %% of height)\n",
               max_u, mean_top, 100.0 * mean_top / lc.height);
   write_outputs(o, m, u, problem.external_force);

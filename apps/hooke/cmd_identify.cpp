@@ -8,6 +8,7 @@
 #include <hooke/core/output_transaction.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/experiments/identification.hpp>
+#include <hooke/identify/reference_file.hpp>
 #include <hooke/io/mesh_io.hpp>
 #include <memory>
 #include <string>
@@ -33,9 +34,9 @@ std::vector<identify::ReferenceCase> reference_cases(const IdentifyCli& o, const
     return experiments::fem_reference_cases(mesh, material, o.loads);
   }
   std::vector<identify::ReferenceCase> cases;
-  for (const auto& f : o.reference) cases.push_back(experiments::read_reference(f, mesh));
+  for (const auto& f : o.reference) cases.push_back(identify::read_reference(f, mesh));
   for (const auto& f : o.held_out_reference) {
-    cases.push_back(experiments::read_reference(f, mesh));
+    cases.push_back(identify::read_reference(f, mesh));
     cases.back().held_out = true;
   }
   return cases;
@@ -105,7 +106,7 @@ int run_identify(const IdentifyCli& o) {
   if (!o.write_reference.empty()) {
     const auto dir = outputs.stage_folder(o.write_reference);
     for (std::size_t c = 0; c < cases.size(); ++c)
-      experiments::write_reference(dir / ("case_" + std::to_string(c + 1) + ".vtu"), mesh, cases[c]);
+      identify::write_reference(dir / ("case_" + std::to_string(c + 1) + ".vtu"), mesh, cases[c]);
   }
   const bool staged_model = std::filesystem::path(o.output).extension() != ".vtu";  // .vtu writes two files itself
   if (staged_model) calibrate::write_model(outputs.stage_file(o.output), model);

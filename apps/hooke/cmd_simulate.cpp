@@ -2,8 +2,9 @@
 // --steps N [...] -o DIR: dynamics of a calibrated model with a ParaView time series and a timing report.
 #include <cstdio>
 #include <hooke/core/error.hpp>
-#include <hooke/experiments/simulation.hpp>
+#include <hooke/core/quantile.hpp>
 #include <hooke/io/series.hpp>
+#include <hooke/solve/simulation.hpp>
 #include <memory>
 #include <string>
 
@@ -16,7 +17,7 @@ struct SimulateCli {
   ModelSource in;
   IntegratorInput integrator;
   std::string out_dir;
-  experiments::SimulationOptions run;
+  solve::SimulationOptions run;
   bool free_body = false, no_reorder = false;
   std::vector<double> probe_offset, probe_force;
 };
@@ -25,15 +26,14 @@ VecX as_vector(const std::vector<double>& v) {
   return Eigen::Map<const VecX>(v.data(), static_cast<Eigen::Index>(v.size()));
 }
 
-void print_summary(const SimulateCli& o, const calibrate::CalibratedModel& model,
-                   const experiments::SimulationSummary& s, const std::string& pvd, int frames) {
+void print_summary(const SimulateCli& o, const calibrate::CalibratedModel& model, const solve::SimulationSummary& s,
+                   const std::string& pvd, int frames) {
   const auto steps = static_cast<double>(s.step_ms.size());
   std::printf("hooke simulate: %s, %d nodes, %s model, %s, dt %.3g s, %zu steps (%.4g s)\n", model.mesh.source.c_str(),
               model.mesh.node_count(), model.method.c_str(), o.integrator.integrator.c_str(), o.run.dynamics.dt,
               s.step_ms.size(), s.time);
   std::printf("  time      %.4g ms/step median, %.4g ms/step p95; %.3g solver iterations per step\n",
-              experiments::quantile(s.step_ms, 0.5), experiments::quantile(s.step_ms, 0.95),
-              static_cast<double>(s.iterations) / steps);
+              quantile(s.step_ms, 0.5), quantile(s.step_ms, 0.95), static_cast<double>(s.iterations) / steps);
   std::printf("  energy    %.6g J at start, %.6g J at end (kinetic %.6g J)\n", s.energy_start, s.energy_end,
               s.kinetic_end);
   if (o.run.probe_node >= 0) std::printf("  probe     max force on the device %.6g N\n", s.max_probe_force);
@@ -53,10 +53,9 @@ int run_simulate(SimulateCli o) {
   o.run.probe_force = as_vector(o.probe_force);
   io::SeriesWriter series(o.out_dir, model.mesh);  // frames appear only when the whole run succeeded
   const int d = model.mesh.dim();
-  const experiments::SimulationSummary s =
-      experiments::simulate(model, o.run, [&](int, double t, const VecX& u, const VecX& v) {
-        series.write(t, {{"displacement", d, u}, {"velocity", d, v}});
-      });
+  const solve::SimulationSummary s = solve::simulate(model, o.run, [&](int, double t, const VecX& u, const VecX& v) {
+    series.write(t, {{"displacement", d, u}, {"velocity", d, v}});
+  });
   const int frames = series.frame_count();
   print_summary(o, model, s, series.commit().string(), frames);
   return 0;

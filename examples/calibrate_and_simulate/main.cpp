@@ -6,8 +6,8 @@
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/compare.hpp>
-#include <hooke/experiments/simulation.hpp>
 #include <hooke/io/mesh_io.hpp>
+#include <hooke/solve/simulation.hpp>
 #include <string>
 
 int main(int argc, char** argv) {
@@ -28,14 +28,14 @@ int main(int argc, char** argv) {
     for (const auto& c : model.certificate)
       std::printf("  %-8s max error %.3e m, relative L2 %.3f\n", c.load.c_str(), c.max_error, c.relative_l2);
 
-    hooke::experiments::SimulationOptions run;
+    hooke::solve::SimulationOptions run;
     run.simulator.integrator = hooke::solve::Integrator::kLocalGlobal;
     run.steps = 100;
     run.dynamics.gravity = true;
     run.dynamics.damping_mass = 5.0;
     hooke::VecX last;
-    const auto summary = hooke::experiments::simulate(
-        model, run, [&](int, double, const hooke::VecX& u, const hooke::VecX&) { last = u; });
+    const auto summary =
+        hooke::solve::simulate(model, run, [&](int, double, const hooke::VecX& u, const hooke::VecX&) { last = u; });
     int tip = 0;  // the highest node
     for (int i = 1; i < mesh.node_count(); ++i)
       if (mesh.nodes(i, 2) > mesh.nodes(tip, 2)) tip = i;

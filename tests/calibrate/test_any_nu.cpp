@@ -184,8 +184,8 @@ TEST_P(AnyNuAgainstFem, WithinTheTargetsOnBothMeshes) {
   experiments::CompareOptions o;
   o.method = Method::kAnyNuTet;
   o.strain = 0.001;
-  const std::pair<const char*, experiments::LoadKind> cases[] = {
-      {"/cylinder_hole.msh", experiments::LoadKind::kStretch}, {"/cone.msh", experiments::LoadKind::kShear}};
+  const std::pair<const char*, model::LoadKind> cases[] = {{"/cylinder_hole.msh", model::LoadKind::kStretch},
+                                                           {"/cone.msh", model::LoadKind::kShear}};
   for (const auto& [file, load] : cases) {
     o.load = load;
     const experiments::Comparison c =

@@ -126,7 +126,7 @@ TEST(AnyNuTriangle, AreaTermsSurviveTheModelFile) {
 TEST(AnyNuTriangle, FollowsTheFemInPlaneStrain) {
   const mesh::Mesh m = io::read_mesh(HOOKE_MESH_DATA "/rectangle_tri.msh");
   for (double nu : {0.3, 0.45, 0.49})
-    for (experiments::LoadKind load : {experiments::LoadKind::kStretch, experiments::LoadKind::kShear}) {
+    for (model::LoadKind load : {model::LoadKind::kStretch, model::LoadKind::kShear}) {
       const Material mat{Law::kLinear, 14630.0, nu, Plane::kStrain, 0.001};
       experiments::CompareOptions o;
       o.load = load;

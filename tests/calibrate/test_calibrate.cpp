@@ -198,16 +198,16 @@ TEST(CompareCylinder, LloydTetErrorsOfThePapersOrderAndNoCollapsedAnswer) {
   experiments::CompareOptions o;
   o.method = Method::kLloydTet;
   o.strain = 0.12;
-  for (auto load : {experiments::LoadKind::kStretch, experiments::LoadKind::kShear}) {
+  for (auto load : {model::LoadKind::kStretch, model::LoadKind::kShear}) {
     o.load = load;
     const auto c = experiments::compare(m, {mat}, o);
     ASSERT_EQ(c.spring_report.status, solve::SolveStatus::kConverged) << c.spring_report.message;
-    std::cout << "[cylinder] " << experiments::load_kind_name(load) << ": max " << 100 * c.max_error << " cm, mean "
+    std::cout << "[cylinder] " << model::load_kind_name(load) << ": max " << 100 * c.max_error << " cm, mean "
               << 100 * c.mean_error << " cm\n";
     EXPECT_LT(c.max_error, 2.0 * 0.00088);
     EXPECT_GT(c.max_error, 0.5 * 0.00039);
   }
-  o.load = experiments::LoadKind::kCompress;
+  o.load = model::LoadKind::kCompress;
   const auto c = experiments::compare(m, {mat}, o);
   EXPECT_NE(c.spring_report.status, solve::SolveStatus::kConverged) << "a collapsed spring model was reported";
   EXPECT_TRUE(std::isfinite(make_model(m, c.springs)->energy(c.spring_positions)));

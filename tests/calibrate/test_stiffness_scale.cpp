@@ -139,8 +139,8 @@ class ScaledFitAgainstLloydTet : public testing::TestWithParam<double> {};
 TEST_P(ScaledFitAgainstLloydTet, NeverWorseOnIssue15sTable) {
   const double nu = GetParam();
   const Material mat{Law::kLinear, 14630.0, nu};
-  const std::pair<const char*, experiments::LoadKind> cases[] = {
-      {"/cylinder_hole.msh", experiments::LoadKind::kStretch}, {"/cone.msh", experiments::LoadKind::kShear}};
+  const std::pair<const char*, model::LoadKind> cases[] = {{"/cylinder_hole.msh", model::LoadKind::kStretch},
+                                                           {"/cone.msh", model::LoadKind::kShear}};
   for (const auto& [file, load] : cases) {
     const mesh::Mesh m = io::read_mesh(std::string(HOOKE_MESH_DATA) + file);
     experiments::CompareOptions o;

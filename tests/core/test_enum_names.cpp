@@ -6,10 +6,10 @@
 #include <hooke/calibrate/method.hpp>
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/core/error.hpp>
-#include <hooke/experiments/load_case.hpp>
 #include <hooke/interactive/haptic_model.hpp>
 #include <hooke/material/material.hpp>
 #include <hooke/mesh/tetrahedralize.hpp>
+#include <hooke/model/load_case.hpp>
 #include <hooke/solve/integrator.hpp>
 #include <hooke/solve/newton.hpp>
 #include <set>
@@ -53,9 +53,9 @@ TEST(EnumNames, EveryNamedEnumReadsBack) {
   using material::Plane;
   expect_round_trip<Law>({Law::kLinear, Law::kStVK, Law::kNeoHookean}, material::law_name, material::law_from_name);
   expect_round_trip<Plane>({Plane::kStress, Plane::kStrain}, material::plane_name, material::plane_from_name);
-  using experiments::LoadKind;
-  expect_round_trip<LoadKind>({LoadKind::kStretch, LoadKind::kCompress, LoadKind::kShear}, experiments::load_kind_name,
-                              experiments::load_kind_from_name);
+  using model::LoadKind;
+  expect_round_trip<model::LoadKind>({model::LoadKind::kStretch, model::LoadKind::kCompress, model::LoadKind::kShear},
+                                     model::load_kind_name, model::load_kind_from_name);
   using solve::Integrator;
   expect_round_trip<Integrator>({Integrator::kSymplecticEuler, Integrator::kVelocityVerlet, Integrator::kImplicitEuler,
                                  Integrator::kImplicitEulerLinearised, Integrator::kLocalGlobal,

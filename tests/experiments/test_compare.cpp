@@ -22,7 +22,7 @@ TEST(CompareAcross, SameMeshIsPlainCompare) {
   const mesh::Mesh m = mesh::rectangle_quads(0.05, 0.05, 4, 4);
   CompareOptions o;
   o.method = calibrate::Method::kLloydSquare;
-  o.load = LoadKind::kShear;
+  o.load = model::LoadKind::kShear;
   o.strain = 0.12;
   const Comparison a = compare(m, {kThird}, o), b = compare_across(m, m, kThird, o);
   EXPECT_NEAR(a.max_error, b.max_error, 1e-12);
@@ -35,7 +35,7 @@ TEST(CompareAcross, CoarseSpringModelsAgainstTheFineFem) {
   const mesh::Mesh fine = mesh::rectangle_quads(0.05, 0.05, 8, 8), coarse = mesh::rectangle_quads(0.05, 0.05, 2, 2);
   CompareOptions o;
   o.method = calibrate::Method::kLloydSquare;
-  o.load = LoadKind::kStretch;
+  o.load = model::LoadKind::kStretch;
   o.strain = 0.05;
   const Comparison c = compare_across(coarse, fine, kThird, o), f = compare_across(fine, fine, kThird, o);
   ASSERT_EQ(c.fem_positions.size(), 2 * coarse.node_count());
@@ -78,7 +78,7 @@ TEST(Figure, DrawingEdgesAreElementEdgesIn2DAndTheSurfaceIn3D) {
 TEST(CompareSurface, SameLoadsOnBothAndTheSameSense) {
   const mesh::Mesh cube = mesh::cube_surface(4, 0.1);
   CompareOptions o;
-  o.load = LoadKind::kCompress;
+  o.load = model::LoadKind::kCompress;
   o.strain = 0.02;
   const Comparison c = compare_surface(cube, {Law::kLinear, 3250.0, 0.3}, {}, o, 3);
   ASSERT_EQ(c.fem_report.status, solve::SolveStatus::kConverged);
@@ -112,9 +112,10 @@ TEST(CompareCalibratedCases, EqualSeparateComparisons) {
   for (const calibrate::CalibratedModel& model : models) {
     // The surface model on this coarse cube finds no stretched equilibrium at any load factor, in separate calls as
     // well (Newton on its approximate Hessian): compression and shear only.
-    const std::vector<LoadKind> kinds =
-        model.surface ? std::vector<LoadKind>{LoadKind::kCompress, LoadKind::kShear}
-                      : std::vector<LoadKind>{LoadKind::kStretch, LoadKind::kCompress, LoadKind::kShear};
+    const std::vector<model::LoadKind> kinds =
+        model.surface ? std::vector<model::LoadKind>{model::LoadKind::kCompress, model::LoadKind::kShear}
+                      : std::vector<model::LoadKind>{model::LoadKind::kStretch, model::LoadKind::kCompress,
+                                                     model::LoadKind::kShear};
     CompareOptions o;
     o.strain = 0.01;
     o.load_steps = 1;

@@ -4,9 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <hooke/core/error.hpp>
+#include <hooke/core/quantile.hpp>
 #include <hooke/experiments/dynamics_benchmark.hpp>
-#include <hooke/experiments/simulation.hpp>
 #include <hooke/mesh/validate.hpp>
+#include <hooke/solve/simulation.hpp>
 #include <iostream>
 #include <string>
 
@@ -38,18 +39,18 @@ class BenchmarkCylinderUnderGravity : public testing::TestWithParam<Case> {};
 // linearised one with CG, 0.14 s a step against 1.4 s with a factorisation per step).
 TEST_P(BenchmarkCylinderUnderGravity, StaysAdmissible) {
   static const calibrate::CalibratedModel model = benchmark_model(1);
-  SimulationOptions o;
+  solve::SimulationOptions o;
   o.simulator.integrator = GetParam().integrator;
   o.simulator.global_solve = GetParam().global_solve;
   o.simulator.newton.linear_solver = GetParam().linear_solver;
   o.steps = GetParam().steps;
-  o.every = 1;  // simulate() checks every frame: finite, no inverted element
+  o.every = 1;  // solve::simulate() checks every frame: finite, no inverted element
   o.dynamics.gravity = true;
   const bool explicit_step = GetParam().integrator == solve::Integrator::kSymplecticEuler ||
                              GetParam().integrator == solve::Integrator::kVelocityVerlet;
   o.dynamics.dt = explicit_step ? 5e-5 : 1e-3;  // the explicit limit is 6.5e-5 s here
   double sag = 0.0;
-  const SimulationSummary s = simulate(model, o, [&](int, double, const VecX& u, const VecX&) {
+  const solve::SimulationSummary s = solve::simulate(model, o, [&](int, double, const VecX& u, const VecX&) {
     for (Eigen::Index i = 2; i < u.size(); i += 3) sag = std::max(sag, -u(i));
   });
   std::cout << "[bench cylinder] " << solve::integrator_name(GetParam().integrator) << ": " << o.steps

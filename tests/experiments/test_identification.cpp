@@ -5,6 +5,7 @@
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/identification.hpp>
 #include <hooke/fem/elastic_block.hpp>
+#include <hooke/identify/reference_file.hpp>
 #include <hooke/io/vtu.hpp>
 #include <hooke/mesh/generators.hpp>
 
@@ -81,21 +82,21 @@ TEST(ReferenceFiles, RoundTripAndRefuseAnotherMesh) {
   const auto cases = experiments::fem_reference_cases(mesh, kTissue, loads);
   const auto dir = std::filesystem::temp_directory_path() / "hooke_reference_files";
   std::filesystem::create_directories(dir);
-  experiments::write_reference(dir / "c.vtu", mesh, cases[2]);
-  const identify::ReferenceCase back = experiments::read_reference(dir / "c.vtu", mesh);
+  identify::write_reference(dir / "c.vtu", mesh, cases[2]);
+  const identify::ReferenceCase back = identify::read_reference(dir / "c.vtu", mesh);
   EXPECT_LT((back.positions - cases[2].positions).norm(), 1e-12 * cases[2].positions.norm());
   EXPECT_LT((back.external_force - cases[2].external_force).norm(), 1e-12 * cases[2].external_force.norm());
   EXPECT_EQ(back.fixed_dofs, cases[2].fixed_dofs);
   EXPECT_EQ(back.name, "c.vtu");
-  EXPECT_THROW(experiments::read_reference(dir / "c.vtu", mesh::tet_cylinder(0.01, 0.02, 4, 3)), InvalidArgument);
-  experiments::write_reference(dir / "c.csv", mesh, cases[2]);  // the same as a CSV table
-  const identify::ReferenceCase csv = experiments::read_reference(dir / "c.csv", mesh);
+  EXPECT_THROW(identify::read_reference(dir / "c.vtu", mesh::tet_cylinder(0.01, 0.02, 4, 3)), InvalidArgument);
+  identify::write_reference(dir / "c.csv", mesh, cases[2]);  // the same as a CSV table
+  const identify::ReferenceCase csv = identify::read_reference(dir / "c.csv", mesh);
   EXPECT_LT((csv.positions - cases[2].positions).norm(), 1e-10 * cases[2].positions.norm());
   EXPECT_LT((csv.external_force - cases[2].external_force).norm(), 1e-10 * cases[2].external_force.norm());
   EXPECT_EQ(csv.fixed_dofs, cases[2].fixed_dofs);
   io::write_vtu(dir / "bare.vtu", mesh);
   try {
-    experiments::read_reference(dir / "bare.vtu", mesh);
+    identify::read_reference(dir / "bare.vtu", mesh);
     FAIL() << "a file without displacement was read";
   } catch (const InvalidArgument& e) {
     EXPECT_NE(std::string(e.what()).find("bare.vtu: no point data 'displacement'"), std::string::npos) << e.what();

@@ -8,8 +8,8 @@
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/compare.hpp>
-#include <hooke/experiments/simulation.hpp>
 #include <hooke/io/mesh_io.hpp>
+#include <hooke/solve/simulation.hpp>
 
 namespace hooke::experiments {
 namespace {
@@ -31,11 +31,11 @@ TEST(ScanToModel, FemurIsTetrahedralizedCalibratedCertifiedAndSimulated) {
   // Below the slender bone's buckling strain (docs/meshing.md): the linear reference stands for it.
   for (const calibrate::CertificateCase& c : certify(model, 1e-3, 4))
     EXPECT_LE(c.relative_l2, 0.15) << c.load << ": " << c.relative_l2;
-  SimulationOptions so;
+  solve::SimulationOptions so;
   so.steps = 300;
   so.dynamics.gravity = true;
   so.dynamics.damping_mass = 10.0;
-  const SimulationSummary s = simulate(model, so, [](int, double, const VecX&, const VecX&) {});
+  const solve::SimulationSummary s = solve::simulate(model, so, [](int, double, const VecX&, const VecX&) {});
   EXPECT_EQ(s.step_ms.size(), 300u);
   EXPECT_EQ(s.not_converged, 0);
 }
@@ -63,12 +63,13 @@ TEST(ScanToModel, SurfaceModelOfAFemurThatIsNotStarShaped) {
   // is about 4e-3; every step converged, nothing inverted, the body hangs on its anchors at rest.
   const calibrate::CalibratedModel rubber =
       calibrate::calibrate_model(surface, {material::Law::kLinear, 1e6, 0.45}, mo);
-  SimulationOptions so;
+  solve::SimulationOptions so;
   so.steps = 300;
   so.dynamics.gravity = true;
   so.dynamics.damping_mass = 10.0;
   VecX last;
-  const SimulationSummary run = simulate(rubber, so, [&](int, double, const VecX& u, const VecX&) { last = u; });
+  const solve::SimulationSummary run =
+      solve::simulate(rubber, so, [&](int, double, const VecX& u, const VecX&) { last = u; });
   EXPECT_EQ(run.step_ms.size(), 300u);
   EXPECT_EQ(run.not_converged, 0);
   EXPECT_LT(run.iterations, 8 * 300);

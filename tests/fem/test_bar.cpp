@@ -4,10 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <hooke/experiments/load_case.hpp>
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/mesh/generators.hpp>
 #include <hooke/mesh/measure.hpp>
+#include <hooke/model/load_case.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
 #include <iostream>
 #include <support/meshes.hpp>
@@ -27,7 +27,7 @@ void uniform_tension(const mesh::Mesh& m, double width, double length) {
   const int d = m.dim(), up = d - 1;
   const double sigma = 500.0;
   model::Problem p = bar_problem(m);
-  const auto lc = experiments::make_load_case(m, experiments::LoadKind::kStretch, sigma, kT);
+  const auto lc = model::make_load_case(m, model::LoadKind::kStretch, sigma, kT);
   p.external_force = lc.nodal_forces;
   // Symmetry supports: bottom slides freely in-plane; one corner pinned; in 3D one more node stops the spin.
   for (int i : lc.fixed_nodes) p.fixed_dofs[static_cast<size_t>(d * i + up)] = 1;

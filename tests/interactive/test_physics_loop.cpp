@@ -7,7 +7,7 @@
 #include <atomic>
 #include <chrono>
 #include <hooke/core/error.hpp>
-#include <hooke/experiments/simulation.hpp>
+#include <hooke/core/quantile.hpp>
 #include <hooke/interactive/guarded.hpp>
 #include <hooke/interactive/latest_job.hpp>
 #include <hooke/interactive/physics_loop.hpp>
@@ -185,7 +185,7 @@ TEST(PhysicsLoop, EveryMemberIsServedWithinAStepOrTwo) {
     post_steps.push_back((ran_at - posted_at) / dt);
   }
   loop.stop();
-  const auto p99 = [](std::vector<double> v) { return experiments::quantile(v, 0.99); };
+  const auto p99 = [](std::vector<double> v) { return quantile(v, 0.99); };
   std::cout << "[served] 99th percentile of the steps during stats() " << p99(stats_steps)
             << ", set_paused() + stats() " << p99(pause_steps) << ", snapshot() " << p99(snapshot_steps)
             << ", post() to run " << p99(post_steps) << "\n";

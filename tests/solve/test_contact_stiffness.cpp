@@ -7,9 +7,9 @@
 #include <Eigen/Eigenvalues>
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/core/error.hpp>
-#include <hooke/experiments/load_case.hpp>
 #include <hooke/mesh/generators.hpp>
 #include <hooke/model/hessian_assembly.hpp>
+#include <hooke/model/load_case.hpp>
 #include <hooke/model/problem.hpp>
 #include <hooke/solve/contact_stiffness.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
@@ -33,7 +33,7 @@ Body body(const std::string& method, int radial, int layers) {
   o.method = method;
   b.model = calibrate::calibrate_model(m, {material::Law::kLinear, 14630.0, 0.45}, o);
   b.built = calibrate::build_model(b.model);
-  b.clamped = experiments::make_load_case(m, experiments::LoadKind::kStretch, 0.0, 1.0).fixed_nodes;
+  b.clamped = model::make_load_case(m, model::LoadKind::kStretch, 0.0, 1.0).fixed_nodes;
   b.fixed.assign(static_cast<size_t>(3 * m.node_count()), 0);
   for (const int i : b.clamped)
     for (int a = 0; a < 3; ++a) b.fixed[static_cast<size_t>(3 * i + a)] = 1;

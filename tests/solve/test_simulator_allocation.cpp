@@ -8,9 +8,9 @@
 #include <cstdlib>
 #include <hooke/calibrate/method.hpp>
 #include <hooke/calibrate/surface_model.hpp>
-#include <hooke/experiments/load_case.hpp>
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/mesh/generators.hpp>
+#include <hooke/model/load_case.hpp>
 #include <hooke/model/mass.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <string>
@@ -95,7 +95,7 @@ TEST_P(StepAllocation, NoHeapAllocationAfterTheFirstStep) {
         mesh, calibrate::calibrate(mesh, {{material::Law::kLinear, 14630.0, 0.25}}, calibrate::Method::kLloydTet));
   }
   model::Problem problem = model::make_problem(model);
-  model::fix_nodes(problem, experiments::make_load_case(mesh, experiments::LoadKind::kStretch, 0.0).fixed_nodes);
+  model::fix_nodes(problem, model::make_load_case(mesh, model::LoadKind::kStretch, 0.0).fixed_nodes);
   VecX gravity = VecX::Zero(3);
   gravity(2) = -9.81;
   const bool explicit_step =

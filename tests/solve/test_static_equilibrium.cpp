@@ -4,9 +4,9 @@
 
 #include <cmath>
 #include <hooke/core/error.hpp>
-#include <hooke/experiments/load_case.hpp>
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/mesh/generators.hpp>
+#include <hooke/model/load_case.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
 #include <iostream>
 #include <support/meshes.hpp>
@@ -14,14 +14,14 @@
 namespace hooke::solve {
 namespace {
 
-using experiments::LoadKind;
 using material::Law;
+using model::LoadKind;
 
-model::Problem loaded(const mesh::Mesh& m, Law law, LoadKind kind, double traction, double thickness = 0.01) {
+model::Problem loaded(const mesh::Mesh& m, Law law, model::LoadKind kind, double traction, double thickness = 0.01) {
   auto model = std::make_shared<model::Model>(m.dim(), test::flat_positions(m));
   model->add(fem::make_elastic_block(m, {law, 14630.0, 0.3, material::Plane::kStress, thickness}));
   model::Problem p = model::make_problem(model);
-  experiments::apply(experiments::make_load_case(m, kind, traction, thickness), p);
+  model::apply(model::make_load_case(m, kind, traction, thickness), p);
   return p;
 }
 
@@ -31,7 +31,7 @@ const mesh::Mesh& column3d() {
 }
 
 TEST(StaticEquilibrium, NonlinearLawsAgreeWithLinearForTinyLoads) {
-  for (LoadKind kind : {LoadKind::kStretch, LoadKind::kCompress, LoadKind::kShear}) {
+  for (model::LoadKind kind : {model::LoadKind::kStretch, model::LoadKind::kCompress, model::LoadKind::kShear}) {
     const auto lin = linear_static(loaded(column3d(), Law::kLinear, kind, 0.05));
     require_converged(lin.report);
     const VecX u_lin = lin.positions - test::flat_positions(column3d());
@@ -45,8 +45,8 @@ TEST(StaticEquilibrium, NonlinearLawsAgreeWithLinearForTinyLoads) {
 }
 
 TEST(StaticEquilibrium, LinearLawNewtonEqualsLinearSolve) {
-  const auto lin = linear_static(loaded(column3d(), Law::kLinear, LoadKind::kShear, 800.0));
-  const auto newton = static_equilibrium(loaded(column3d(), Law::kLinear, LoadKind::kShear, 800.0));
+  const auto lin = linear_static(loaded(column3d(), Law::kLinear, model::LoadKind::kShear, 800.0));
+  const auto newton = static_equilibrium(loaded(column3d(), Law::kLinear, model::LoadKind::kShear, 800.0));
   require_converged(newton.report);
   EXPECT_LT((lin.positions - newton.positions).norm(), 1e-8 * lin.positions.norm());
   EXPECT_LE(newton.report.iterations, 2 * newton.report.load_steps);
@@ -57,7 +57,7 @@ TEST(StaticEquilibrium, LinearLawNewtonEqualsLinearSolve) {
 // where the tangent moves from the rest one, with fewer factorisations than plain modified Newton.
 TEST(StaticEquilibrium, KeptFactorPreconditionedStepsGiveTheSameStatesWithFewerFactorisations) {
   int plain_total = 0, krylov_total = 0;
-  for (LoadKind kind : {LoadKind::kStretch, LoadKind::kCompress, LoadKind::kShear}) {
+  for (model::LoadKind kind : {model::LoadKind::kStretch, model::LoadKind::kCompress, model::LoadKind::kShear}) {
     const model::Problem p = loaded(column3d(), Law::kNeoHookean, kind, 700.0);
     StaticOptions o;
     o.newton.reuse_factorization = true;
@@ -69,12 +69,12 @@ TEST(StaticEquilibrium, KeptFactorPreconditionedStepsGiveTheSameStatesWithFewerF
     require_converged(plain.report);
     require_converged(krylov.report);
     const VecX u = plain.positions - p.model->rest_positions();
-    EXPECT_LT((krylov.positions - plain.positions).norm(), 1e-8 * u.norm()) << experiments::load_kind_name(kind);
-    EXPECT_LE(krylov.report.factorizations, plain.report.factorizations) << experiments::load_kind_name(kind);
+    EXPECT_LT((krylov.positions - plain.positions).norm(), 1e-8 * u.norm()) << model::load_kind_name(kind);
+    EXPECT_LE(krylov.report.factorizations, plain.report.factorizations) << model::load_kind_name(kind);
     EXPECT_GE(krylov.report.factorizations, 2);  // the start's, and the final state's stability test
     plain_total += plain.report.factorizations;
     krylov_total += krylov.report.factorizations;
-    std::cout << experiments::load_kind_name(kind) << ": factorisations " << plain.report.factorizations << " -> "
+    std::cout << model::load_kind_name(kind) << ": factorisations " << plain.report.factorizations << " -> "
               << krylov.report.factorizations << ", Newton iterations " << plain.report.iterations << " -> "
               << krylov.report.iterations << ", max displacement " << u.cwiseAbs().maxCoeff() << " m\n";
   }
@@ -85,7 +85,8 @@ TEST(StaticEquilibrium, KeptFactorPreconditionedStepsGiveTheSameStatesWithFewerF
 // Newton's factorisation carried from load to load, and fewer factorisations in all. Stretch, compression and shear
 // clamp the same nodes; a NeoHookean column at a load where Newton needs several iterations.
 TEST(StaticEquilibrium, SeveralLoadsOnOneProblemGiveTheSeparateSolvesStates) {
-  const std::vector<LoadKind> kinds{LoadKind::kStretch, LoadKind::kCompress, LoadKind::kShear};
+  const std::vector<model::LoadKind> kinds{model::LoadKind::kStretch, model::LoadKind::kCompress,
+                                           model::LoadKind::kShear};
   for (Law law : {Law::kLinear, Law::kNeoHookean}) {
     std::vector<VecX> loads;
     std::vector<StaticResult> separate, linear_separate;
@@ -93,13 +94,13 @@ TEST(StaticEquilibrium, SeveralLoadsOnOneProblemGiveTheSeparateSolvesStates) {
     o.newton.reuse_factorization = true;
     o.estimate_min_eigenvalue = false;
     o.initial_load_steps = 1;
-    for (LoadKind kind : kinds) {
+    for (model::LoadKind kind : kinds) {
       const model::Problem p = loaded(column3d(), law, kind, 300.0);
       loads.push_back(p.external_force);
       separate.push_back(static_equilibrium(p, o));
       if (law == Law::kLinear) linear_separate.push_back(linear_static(p));
     }
-    const model::Problem p = loaded(column3d(), law, LoadKind::kStretch, 300.0);
+    const model::Problem p = loaded(column3d(), law, model::LoadKind::kStretch, 300.0);
     const std::vector<StaticResult> together = static_equilibria(p, loads, o);
     ASSERT_EQ(together.size(), kinds.size());
     double separate_seconds = 0.0, together_seconds = 0.0;
@@ -125,7 +126,7 @@ TEST(StaticEquilibrium, SeveralLoadsOnOneProblemGiveTheSeparateSolvesStates) {
     }
   }
   // An unheld body: every load reports singular, from the one test of the start.
-  const model::Problem held = loaded(column3d(), Law::kLinear, LoadKind::kStretch, 300.0);
+  const model::Problem held = loaded(column3d(), Law::kLinear, model::LoadKind::kStretch, 300.0);
   model::Problem free_body = model::make_problem(held.model);
   for (const StaticResult& r : static_equilibria(free_body, {held.external_force, -held.external_force}))
     EXPECT_EQ(r.report.status, SolveStatus::kSingular);
@@ -138,7 +139,7 @@ TEST(StaticEquilibrium, SeveralLoadsOnOneProblemGiveTheSeparateSolvesStates) {
 // An initial guess near the answer replaces load stepping (one load step, few iterations, the same state);
 // a useless guess (far off) falls back to load stepping from rest; a wrong size is an error.
 TEST(StaticEquilibrium, InitialGuessIsUsedWhenItConverges) {
-  const model::Problem p = loaded(column3d(), Law::kNeoHookean, LoadKind::kStretch, 400.0);
+  const model::Problem p = loaded(column3d(), Law::kNeoHookean, model::LoadKind::kStretch, 400.0);
   const auto plain = static_equilibrium(p);
   require_converged(plain.report);
   StaticOptions o;
@@ -160,7 +161,7 @@ TEST(StaticEquilibrium, InvariantUnderRigidRotationOfMeshAndLoad) {
   const mesh::Mesh& m = column3d();
   const Mat3 r = test::random_rotation(4);
   for (Law law : {Law::kStVK, Law::kNeoHookean}) {
-    model::Problem p = loaded(m, law, LoadKind::kShear, 200.0);
+    model::Problem p = loaded(m, law, model::LoadKind::kShear, 200.0);
     const auto base = static_equilibrium(p);
     require_converged(base.report);
     mesh::Mesh rotated = m;
@@ -187,11 +188,11 @@ TEST(StaticEquilibrium, InvariantUnderRigidRotationOfMeshAndLoad) {
 TEST(StaticEquilibrium, DetectsBucklingAndNeverReturnsTheUnstableState) {
   const mesh::Mesh m = mesh::rectangle_quads(0.01, 0.1, 4, 40);
   const double sigma_cr = M_PI * M_PI * 14630.0 * 0.01 * 0.01 / (48.0 * 0.1 * 0.1);
-  const auto below = static_equilibrium(loaded(m, Law::kStVK, LoadKind::kCompress, 0.5 * sigma_cr));
+  const auto below = static_equilibrium(loaded(m, Law::kStVK, model::LoadKind::kCompress, 0.5 * sigma_cr));
   EXPECT_EQ(below.report.status, SolveStatus::kConverged) << below.report.message;
   EXPECT_GT(below.report.min_eigenvalue, 0.0);
 
-  const auto beyond = static_equilibrium(loaded(m, Law::kStVK, LoadKind::kCompress, 2.0 * sigma_cr));
+  const auto beyond = static_equilibrium(loaded(m, Law::kStVK, model::LoadKind::kCompress, 2.0 * sigma_cr));
   std::cout << "[buckling] " << beyond.report.message
             << "; discrete/analytic critical stress = " << 2.0 * beyond.report.critical_load_factor << "\n";
   ASSERT_EQ(beyond.report.status, SolveStatus::kUnstable) << beyond.report.message;
@@ -216,7 +217,7 @@ TEST(StaticEquilibrium, ReportsNonConvergence) {
   o.newton.max_iterations = 1;
   o.initial_load_steps = 1;
   o.min_load_step = 0.3;
-  const auto r = static_equilibrium(loaded(column3d(), Law::kNeoHookean, LoadKind::kStretch, 3000.0), o);
+  const auto r = static_equilibrium(loaded(column3d(), Law::kNeoHookean, model::LoadKind::kStretch, 3000.0), o);
   EXPECT_EQ(r.report.status, SolveStatus::kNotConverged);
   EXPECT_NE(r.report.message.find("did not converge"), std::string::npos);
 }
@@ -231,7 +232,7 @@ namespace {
 // passed through itself), which the solver must not report.
 TEST(StaticEquilibrium, StVKCompressionPastItsLimitLoadIsNotReportedAsConverged) {
   const mesh::Mesh& m = column3d();
-  const auto r = static_equilibrium(loaded(m, Law::kStVK, LoadKind::kCompress, 0.5 * 14630.0));
+  const auto r = static_equilibrium(loaded(m, Law::kStVK, model::LoadKind::kCompress, 0.5 * 14630.0));
   EXPECT_NE(r.report.status, SolveStatus::kConverged) << r.report.message;
   auto model = std::make_shared<model::Model>(3, test::flat_positions(m));
   model->add(fem::make_elastic_block(m, {Law::kStVK, 14630.0, 0.3}));

@@ -127,8 +127,8 @@ void define_model(py::module_& m) {
   m.def(
       "certify",
       [](CalibratedModel& model, double strain, int layers, const std::vector<std::string>& loads) {
-        std::vector<experiments::LoadKind> kinds;
-        for (const auto& name : loads) kinds.push_back(experiments::load_kind_from_name(name));
+        std::vector<model::LoadKind> kinds;
+        for (const auto& name : loads) kinds.push_back(model::load_kind_from_name(name));
         std::vector<calibrate::CertificateCase> cases;
         {
           py::gil_scoped_release release;

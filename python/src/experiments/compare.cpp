@@ -34,7 +34,7 @@ void define_compare(py::module_& m) {
       [](const calibrate::CalibratedModel& model, const std::string& load, const py::object& strain,
          const py::object& traction, const std::string& reference, int layers) {
         experiments::CompareOptions o;
-        o.load = experiments::load_kind_from_name(load);
+        o.load = model::load_kind_from_name(load);
         o.reference = material::law_from_name(reference);
         if (strain.is_none() == traction.is_none())
           throw py::value_error("compare: give exactly one of strain and traction (Pa)");

@@ -1,4 +1,5 @@
 #include <hooke/core/error.hpp>
+#include <hooke/solve/strain_response.hpp>
 #include <solve/problem.hpp>
 #include <string>
 
@@ -12,13 +13,12 @@ void ProblemData::fix_nodes(const std::vector<int>& nodes) {
   model::fix_nodes(problem, nodes);
 }
 
-void ProblemData::apply_load(experiments::LoadKind kind, double traction, double strain) {
+void ProblemData::apply_load(model::LoadKind kind, double traction, double strain) {
   if (strain != 0.0 && !(strain > 0.0 && std::isfinite(strain)))
     throw InvalidArgument("apply_load: the strain must be a finite number > 0");
   if (!std::isfinite(traction)) throw InvalidArgument("apply_load: the traction must be finite");
-  const double t =
-      strain > 0.0 ? experiments::traction_for_strain(model.mesh, {model.material}, kind, strain) : traction;
-  experiments::apply(experiments::make_load_case(model.mesh, kind, t, model.material.thickness), problem);
+  const double t = strain > 0.0 ? solve::traction_for_strain(model.mesh, {model.material}, kind, strain) : traction;
+  model::apply(model::make_load_case(model.mesh, kind, t, model.material.thickness), problem);
 }
 
 pybind11::array_t<double> ProblemData::rows(const VecX& flat) const {

@@ -3,7 +3,7 @@
 // the solver's problem.
 #include <pybind11/numpy.h>
 #include <hooke/calibrate/model_factory.hpp>
-#include <hooke/experiments/load_case.hpp>
+#include <hooke/model/load_case.hpp>
 #include <hooke/model/problem.hpp>
 
 namespace hooke::python {
@@ -18,7 +18,7 @@ struct ProblemData {
   }
   void fix_nodes(const std::vector<int>& nodes);
   // The load case `kind` at `traction` (Pa) or, when strain > 0, at the traction giving that mean linear-FEM strain.
-  void apply_load(experiments::LoadKind kind, double traction, double strain);
+  void apply_load(model::LoadKind kind, double traction, double strain);
   // Flat positions as an (N, dim) array (a copy).
   pybind11::array_t<double> rows(const VecX& flat) const;
 };

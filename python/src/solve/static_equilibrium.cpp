@@ -4,7 +4,7 @@
 #include <bindings.hpp>
 #include <core/arrays.hpp>
 #include <hooke/calibrate/model_factory.hpp>
-#include <hooke/experiments/load_case.hpp>
+#include <hooke/model/load_case.hpp>
 #include <solve/problem.hpp>
 #include <solve/reports.hpp>
 
@@ -62,7 +62,7 @@ void define_static_equilibrium(py::module_& m) {
           [](ProblemData& p, const std::string& kind, const py::object& traction, const py::object& strain) {
             if (traction.is_none() == strain.is_none())
               throw py::value_error("apply_load: give exactly one of traction (Pa) and strain");
-            p.apply_load(experiments::load_kind_from_name(kind), traction.is_none() ? 0.0 : traction.cast<double>(),
+            p.apply_load(model::load_kind_from_name(kind), traction.is_none() ? 0.0 : traction.cast<double>(),
                          strain.is_none() ? 0.0 : strain.cast<double>());
           },
           py::arg("kind"), py::arg("traction") = py::none(), py::arg("strain") = py::none(),

@@ -6,6 +6,7 @@
 #include <hooke/mesh/generators.hpp>
 #include <hooke/mesh/interpolate.hpp>
 #include <hooke/mesh/measure.hpp>
+#include <hooke/solve/strain_response.hpp>
 
 namespace hooke::experiments {
 namespace {
@@ -26,14 +27,14 @@ solve::StaticOptions statics(int load_steps = solve::StaticOptions{}.initial_loa
 
 // The FEM reference under `load` (linear: one linear solve; otherwise Newton with the stability check).
 solve::StaticResult solve_fem(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
-                              material::Law law, const LoadCase& load) {
+                              material::Law law, const model::LoadCase& load) {
   model::Problem problem = model::make_problem(fem::elastic_model(mesh, materials, law));
   apply(load, problem);
   return law == material::Law::kLinear ? solve::linear_static(problem) : solve::static_equilibrium(problem, statics());
 }
 
-solve::StaticResult solve_springs(const mesh::Mesh& mesh, const calibrate::SpringModel& springs, const LoadCase& load,
-                                  int load_steps) {
+solve::StaticResult solve_springs(const mesh::Mesh& mesh, const calibrate::SpringModel& springs,
+                                  const model::LoadCase& load, int load_steps) {
   model::Problem problem = model::make_problem(calibrate::make_model(mesh, springs));
   apply(load, problem);
   return solve::static_equilibrium(problem, statics(load_steps));
@@ -52,7 +53,7 @@ void measure(Comparison& c, const VecX& rest, int d) {
 }
 
 double traction_of(const mesh::Mesh& mesh, const std::vector<material::Material>& materials, const CompareOptions& o) {
-  if (o.strain != 0.0) return traction_for_strain(mesh, materials, o.load, o.strain);  // refuses <= 0, NaN
+  if (o.strain != 0.0) return solve::traction_for_strain(mesh, materials, o.load, o.strain);  // refuses <= 0, NaN
   if (!std::isfinite(o.traction_pa)) throw InvalidArgument("the traction must be a finite number of pascals");
   return o.traction_pa;
 }
@@ -60,21 +61,22 @@ double traction_of(const mesh::Mesh& mesh, const std::vector<material::Material>
 // The load cases of `kinds` (o.load is not used) on `mesh` (thickness from the first material) and the FEM
 // references under them. At a strain with the linear reference, the solve that finds each traction is the reference,
 // one factorisation for all the kinds (linear_responses_for_strain).
-std::vector<std::pair<LoadCase, solve::StaticResult>> loaded_references(
-    const mesh::Mesh& mesh, const std::vector<material::Material>& materials, const std::vector<LoadKind>& kinds,
+std::vector<std::pair<model::LoadCase, solve::StaticResult>> loaded_references(
+    const mesh::Mesh& mesh, const std::vector<material::Material>& materials, const std::vector<model::LoadKind>& kinds,
     const CompareOptions& o) {
   const double thickness = materials.at(0).thickness;
-  std::vector<std::pair<LoadCase, solve::StaticResult>> out;
+  std::vector<std::pair<model::LoadCase, solve::StaticResult>> out;
   if (o.strain != 0.0 && o.reference == material::Law::kLinear) {
-    std::vector<StrainResponse> r = linear_responses_for_strain(mesh, materials, kinds, o.strain);  // refuses <= 0
+    std::vector<solve::StrainResponse> r =
+        solve::linear_responses_for_strain(mesh, materials, kinds, o.strain);  // refuses <= 0
     for (size_t k = 0; k < kinds.size(); ++k)
-      out.emplace_back(make_load_case(mesh, kinds[k], r[k].traction_pa, thickness), std::move(r[k].fem));
+      out.emplace_back(model::make_load_case(mesh, kinds[k], r[k].traction_pa, thickness), std::move(r[k].fem));
     return out;
   }
-  for (LoadKind kind : kinds) {
+  for (model::LoadKind kind : kinds) {
     CompareOptions one = o;
     one.load = kind;
-    LoadCase load = make_load_case(mesh, kind, traction_of(mesh, materials, one), thickness);
+    model::LoadCase load = model::make_load_case(mesh, kind, traction_of(mesh, materials, one), thickness);
     solve::StaticResult fem = solve_fem(mesh, materials, o.reference, load);
     out.emplace_back(std::move(load), std::move(fem));
   }
@@ -82,9 +84,9 @@ std::vector<std::pair<LoadCase, solve::StaticResult>> loaded_references(
 }
 
 // The load case of `o` on `mesh` and the FEM reference under it.
-std::pair<LoadCase, solve::StaticResult> loaded_reference(const mesh::Mesh& mesh,
-                                                          const std::vector<material::Material>& materials,
-                                                          const CompareOptions& o) {
+std::pair<model::LoadCase, solve::StaticResult> loaded_reference(const mesh::Mesh& mesh,
+                                                                 const std::vector<material::Material>& materials,
+                                                                 const CompareOptions& o) {
   return std::move(loaded_references(mesh, materials, {o.load}, o).front());
 }
 
@@ -126,8 +128,8 @@ Comparison compare_across(const mesh::Mesh& coarse, const mesh::Mesh& fine, cons
                           const CompareOptions& options) {
   const double traction = traction_of(fine, {material}, options);
   Comparison c;
-  c.load = make_load_case(coarse, options.load, traction, material.thickness);
-  const LoadCase fine_load = make_load_case(fine, options.load, traction, material.thickness);
+  c.load = model::make_load_case(coarse, options.load, traction, material.thickness);
+  const model::LoadCase fine_load = model::make_load_case(fine, options.load, traction, material.thickness);
   const solve::StaticResult fem = solve_fem(fine, {material}, options.reference, fine_load);
   c.springs = calibrate::calibrate(coarse, {material}, options.method);
   const solve::StaticResult msm = solve_springs(coarse, c.springs, c.load, options.load_steps);
@@ -144,8 +146,8 @@ Comparison compare_across(const mesh::Mesh& coarse, const mesh::Mesh& fine, cons
 }
 
 std::vector<Comparison> compare_calibrated_cases(const calibrate::CalibratedModel& model,
-                                                 const std::vector<LoadKind>& kinds, const CompareOptions& options,
-                                                 int layers) {
+                                                 const std::vector<model::LoadKind>& kinds,
+                                                 const CompareOptions& options, int layers) {
   const calibrate::BuiltModel built = calibrate::build_model(model);
   const VecX rest = built.model->rest_positions();
   std::vector<Comparison> out;
@@ -234,7 +236,7 @@ Comparison compare_surface(const mesh::Mesh& surface, const material::Material& 
 }
 
 std::vector<calibrate::CertificateCase> certify(const calibrate::CalibratedModel& model, double strain, int layers,
-                                                const std::vector<LoadKind>& loads) {
+                                                const std::vector<model::LoadKind>& loads) {
   if (!(strain > 0.0) || !std::isfinite(strain)) throw InvalidArgument("certify: the strain must be > 0");
   if (loads.empty()) throw InvalidArgument("certify: no load case to certify");
   CompareOptions o;
@@ -250,7 +252,7 @@ std::vector<calibrate::CertificateCase> certify(const calibrate::CalibratedModel
     const Comparison& c = cases[k];
     solve::require_converged(c.fem_report);
     solve::require_converged(c.spring_report);
-    out.push_back({std::string(load_kind_name(loads[k])), strain, c.max_error, c.mean_error, c.relative_l2});
+    out.push_back({std::string(model::load_kind_name(loads[k])), strain, c.max_error, c.mean_error, c.relative_l2});
   }
   return out;
 }

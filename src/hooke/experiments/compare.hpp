@@ -3,7 +3,7 @@
 #include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/calibrate/method.hpp>
 #include <hooke/calibrate/surface_model.hpp>
-#include <hooke/experiments/load_case.hpp>
+#include <hooke/model/load_case.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
 #include <vector>
 
@@ -11,7 +11,7 @@ namespace hooke::experiments {
 
 struct CompareOptions {
   calibrate::Method method = calibrate::Method::kLloydTet;  ///< how the springs are calibrated
-  LoadKind load = LoadKind::kStretch;                       ///< load case
+  model::LoadKind load = model::LoadKind::kStretch;         ///< load case
   double traction_pa = 0.0;                                 ///< traction, Pa (ignored when strain != 0)
   double strain = 0.0;  ///< != 0: the traction giving this mean linear-FEM strain (then it must be > 0)
   material::Law reference = material::Law::kLinear;  ///< FEM reference law
@@ -21,7 +21,7 @@ struct CompareOptions {
 };
 
 struct Comparison {
-  LoadCase load;             ///< the boundary conditions the spring model saw
+  model::LoadCase load;      ///< the boundary conditions the spring model saw
   VecX fem_positions;        ///< FEM equilibrium at the spring model's nodes, flat, m
   VecX fem_mesh_positions;   ///< FEM equilibrium on the reference mesh's own nodes, flat, m
   mesh::Mesh fem_mesh;       ///< the reference mesh (the model's own, a finer one, or the surface's tets)
@@ -78,8 +78,8 @@ Comparison compare_calibrated(const calibrate::CalibratedModel& model, const Com
 /// strain, and a spring or FEM-kind model's statics by static_equilibria (one stability test of the rest state and
 /// one kept factorisation for all the loads). The same comparisons as separate calls, to Newton's tolerance.
 std::vector<Comparison> compare_calibrated_cases(const calibrate::CalibratedModel& model,
-                                                 const std::vector<LoadKind>& kinds, const CompareOptions& options,
-                                                 int layers = 4);
+                                                 const std::vector<model::LoadKind>& kinds,
+                                                 const CompareOptions& options, int layers = 4);
 
 /// The certificate a model is shipped with (`hooke calibrate --certify`): stretch, compress and shear (or the cases
 /// `loads` names, in its order) at mean linear-FEM strain `strain` against the linear FEM, each case's max / mean
@@ -87,7 +87,8 @@ std::vector<Comparison> compare_calibrated_cases(const calibrate::CalibratedMode
 /// @throws SolverFailure when a solve does not converge; InvalidArgument for strain <= 0 or no load
 std::vector<calibrate::CertificateCase> certify(const calibrate::CalibratedModel& model, double strain = 0.01,
                                                 int layers = 4,
-                                                const std::vector<LoadKind>& loads = {
-                                                    LoadKind::kStretch, LoadKind::kCompress, LoadKind::kShear});
+                                                const std::vector<model::LoadKind>& loads = {model::LoadKind::kStretch,
+                                                                                             model::LoadKind::kCompress,
+                                                                                             model::LoadKind::kShear});
 
 }  // namespace hooke::experiments

@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/core/quantile.hpp>
 #include <hooke/experiments/dynamics_benchmark.hpp>
-#include <hooke/experiments/load_case.hpp>
-#include <hooke/experiments/simulation.hpp>
 #include <hooke/mesh/generators.hpp>
+#include <hooke/model/load_case.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <hooke/springs/spring_block.hpp>
 #include <memory>
@@ -213,7 +213,7 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
       if (first_method) report.springs.push_back(spring_throughput(cm, triad));
       first_method = false;
       model::Problem problem = model::make_problem(calibrate::build_model(cm).model);
-      model::fix_nodes(problem, make_load_case(cm.mesh, LoadKind::kStretch, 0.0).fixed_nodes);
+      model::fix_nodes(problem, model::make_load_case(cm.mesh, model::LoadKind::kStretch, 0.0).fixed_nodes);
       const solve::Dynamics dynamics{cm.masses, Vec3(0.0, 0.0, -9.81), 0.0, 0.0};
       BenchmarkDrag drag;
       if (options.drag != 0.0)

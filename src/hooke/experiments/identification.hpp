@@ -32,17 +32,6 @@ struct ReferenceLoads {
 std::vector<identify::ReferenceCase> fem_reference_cases(const mesh::Mesh& mesh, const material::Material& material,
                                                          const ReferenceLoads& loads = {});
 
-/// A reference case as a file: a VTU of the rest mesh with point data "displacement" (m, dim components), "force" (N,
-/// the applied nodal force; zero at supports) and "fixed" (1 at supports, 0 elsewhere), or, for a .csv path, the
-/// same per node as columns "node,x,y,z,displacement_x,..,force_x,..,fixed" (io::write_node_csv). Written atomically.
-void write_reference(const std::filesystem::path& path, const mesh::Mesh& mesh,
-                     const identify::ReferenceCase& reference);
-/// Reads a reference written so (or measured: any VTU with those point arrays, or any CSV with those columns, on the
-/// same nodes as `mesh`; "fixed" may be absent, then no node is a support). The case is named after the file.
-/// @throws IoError, ParseError; InvalidArgument naming the file when the nodes differ from `mesh`'s or an array
-///   is missing or has the wrong number of components
-identify::ReferenceCase read_reference(const std::filesystem::path& path, const mesh::Mesh& mesh);
-
 /// The defaults of `hooke identify` and hooke.identify on `mesh`: springs+volume on tets, springs on triangles.
 identify::Parameters default_parameters(const mesh::Mesh& mesh);
 /// The analytic model an identification is measured against (and starts Eq. 1 from): any-nu-tet on tets,

@@ -62,7 +62,7 @@ std::vector<NuRangeRow> run_task(const mesh::Mesh& mesh, const NuRangeOptions& o
   const std::vector<material::Material> materials{material};
   const std::vector<std::string>& methods = *u.methods;
   CompareOptions o;
-  o.load = load_kind_from_name(task.load);
+  o.load = model::load_kind_from_name(task.load);
   o.strain = task.strain;
   o.reference = material::law_from_name(task.reference);
   std::vector<calibrate::SpringModel> models;
@@ -228,7 +228,7 @@ std::vector<Figure> figures(const NuRangeReport& r) {
 std::vector<NuRangeTask> nu_range_tasks(const std::filesystem::path& mesh_dir, const NuRangeOptions& options) {
   for (const auto* list : {&options.methods, &options.triangle_methods})  // refuse unknown names first
     for (const auto& method : *list) calibrate::method_from_name(method);
-  for (const auto& load : options.loads) load_kind_from_name(load);
+  for (const auto& load : options.loads) model::load_kind_from_name(load);
   std::vector<material::Plane> planes;
   for (const auto& p : options.planes) planes.push_back(material::plane_from_name(p));
   std::vector<NuRangeTask> out;

@@ -5,6 +5,7 @@
 #include <hooke/experiments/reproduce_lloyd2007.hpp>
 #include <hooke/io/mesh_io.hpp>
 #include <hooke/mesh/generators.hpp>
+#include <hooke/solve/strain_response.hpp>
 #include <set>
 
 namespace hooke::experiments {
@@ -56,7 +57,7 @@ Lloyd2007Case describe(const mesh::Mesh& m, const Spec& s, const Comparison& r) 
 CompareOptions options(const Spec& s, const std::string& method) {
   CompareOptions o;
   o.method = calibrate::method_from_name(method);
-  o.load = load_kind_from_name(s.load);
+  o.load = model::load_kind_from_name(s.load);
   o.reference = material::law_from_name(s.reference);
   o.strain = s.strain;
   return o;
@@ -168,10 +169,10 @@ void figure3(Runner& run) {
   Figure f{"fig03_error_vs_nu", "Fig. 3: hexagon (1.7 cm high, equilateral triangles), Eq. 8 springs vs FEM", {}};
   for (const char* load : kLoads) {
     CompareOptions o;
-    o.load = load_kind_from_name(load);
+    o.load = model::load_kind_from_name(load);
     // Compression at 6 %: at 12 % the clamped Eq. 8 hexagon passes its limit load.
-    const double strain = o.load == LoadKind::kCompress ? 0.06 : 0.12;
-    o.traction_pa = traction_for_strain(hex, {mat}, o.load, strain);
+    const double strain = o.load == model::LoadKind::kCompress ? 0.06 : 0.12;
+    o.traction_pa = solve::traction_for_strain(hex, {mat}, o.load, strain);
     CurvePanel p{std::string(load) + (strain < 0.1 ? " (6 %" : " (12 %") + " at nu = 1/3)",
                  "Poisson's ratio nu",
                  "node distance error, cm",

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <hooke/core/error.hpp>
-#include <hooke/experiments/simulation.hpp>
+#include <hooke/core/quantile.hpp>
 #include <hooke/interactive/haptic_loop.hpp>
 
 namespace hooke::interactive {
@@ -113,20 +113,20 @@ void HapticLoop::run() {
       m_stats.achieved_rate = wall > 0.0 ? static_cast<double>(ticks) / wall : 0.0;
       m_stats.model_rate = wall > 0.0 ? static_cast<double>(models) / wall : 0.0;
       if (ticks % 100 == 1) {  // percentiles now and then
-        m_stats.period_ms_median = experiments::quantile(periods, 0.5);
-        m_stats.period_ms_p99 = experiments::quantile(periods, 0.99);
-        m_stats.tick_ms_median = experiments::quantile(work, 0.5);
-        m_stats.tick_ms_p99 = experiments::quantile(work, 0.99);
+        m_stats.period_ms_median = quantile(periods, 0.5);
+        m_stats.period_ms_p99 = quantile(periods, 0.99);
+        m_stats.tick_ms_median = quantile(work, 0.5);
+        m_stats.tick_ms_p99 = quantile(work, 0.99);
       }
     }
     next += period;
     if (Clock::now() - next > 50 * period) next = Clock::now();  // far behind: no burst to catch up
   }
   std::lock_guard lock(m_mutex);
-  m_stats.period_ms_median = experiments::quantile(periods, 0.5);
-  m_stats.period_ms_p99 = experiments::quantile(periods, 0.99);
-  m_stats.tick_ms_median = experiments::quantile(work, 0.5);
-  m_stats.tick_ms_p99 = experiments::quantile(work, 0.99);
+  m_stats.period_ms_median = quantile(periods, 0.5);
+  m_stats.period_ms_p99 = quantile(periods, 0.99);
+  m_stats.tick_ms_median = quantile(work, 0.5);
+  m_stats.tick_ms_p99 = quantile(work, 0.99);
 }
 
 }  // namespace hooke::interactive

@@ -1,8 +1,8 @@
 #include <chrono>
 #include <cmath>
 #include <hooke/core/error.hpp>
+#include <hooke/core/quantile.hpp>
 #include <hooke/experiments/dynamics_benchmark.hpp>
-#include <hooke/experiments/simulation.hpp>
 #include <hooke/interactive/haptic_loop.hpp>
 #include <hooke/interactive/haptics_benchmark.hpp>
 #include <hooke/interactive/multirate.hpp>
@@ -38,7 +38,7 @@ double median_step(LiveSimulation& sim, int steps, double speed) {
     sim.step();
     t.push_back(std::chrono::duration<double>(Clock::now() - a).count());
   }
-  return experiments::quantile(t, 0.5);
+  return quantile(t, 0.5);
 }
 
 // run(), its solver failure prefixed with the mesh and the run it stopped (the table has several per mesh).

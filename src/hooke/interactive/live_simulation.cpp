@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <cmath>
 #include <hooke/core/error.hpp>
-#include <hooke/experiments/load_case.hpp>
 #include <hooke/interactive/live_simulation.hpp>
 #include <hooke/mesh/measure.hpp>
+#include <hooke/model/load_case.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
 #include <string>
 
@@ -106,8 +106,7 @@ struct LiveSimulation::Impl {
     model::Problem problem = model::make_problem(built.model);
     clamped.clear();
     if (!model.surface) {
-      clamped = experiments::make_load_case(model.mesh, experiments::LoadKind::kStretch, 0.0, model.material.thickness)
-                    .fixed_nodes;
+      clamped = model::make_load_case(model.mesh, model::LoadKind::kStretch, 0.0, model.material.thickness).fixed_nodes;
       model::fix_nodes(problem, clamped);
     }
     solve::Simulator s(std::move(problem), solve::make_dynamics(settings.dynamics, model.masses, d),

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <hooke/core/atomic_file.hpp>
 #include <hooke/core/error.hpp>
-#include <hooke/experiments/simulation.hpp>
+#include <hooke/core/quantile.hpp>
 #include <hooke/interactive/physics_loop.hpp>
 #include <hooke/solve/dynamics_setup.hpp>
 #include <nlohmann/json.hpp>
@@ -382,8 +382,8 @@ void PhysicsLoop::run_steps() {
     st.behind = st.achieved_rate < 0.99 / period;
     if (clock.count % 100 == 1 || clock.count < 100) {  // percentiles now and then: sorting 1 000 values costs ~20 us
       const std::vector<double> w = clock.window();
-      st.step_ms_median = experiments::quantile(w, 0.5);
-      st.step_ms_p99 = experiments::quantile(w, 0.99);
+      st.step_ms_median = quantile(w, 0.5);
+      st.step_ms_p99 = quantile(w, 0.99);
     }
   };
   enum class Outcome { kStepped, kDrawing, kPaused };

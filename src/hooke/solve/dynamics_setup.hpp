@@ -1,5 +1,5 @@
 #pragma once
-/// How a run's dynamics are set up around a model, whoever runs it: `hooke simulate` (experiments::SimulationOptions),
+/// How a run's dynamics are set up around a model, whoever runs it: `hooke simulate` (solve::SimulationOptions),
 /// the viewer and Python's live simulation (interactive::LiveSettings). One struct, one range check, one builder.
 #include <hooke/core/types.hpp>
 #include <hooke/solve/simulator.hpp>

@@ -3,18 +3,18 @@
 #include <cmath>
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/core/error.hpp>
-#include <hooke/experiments/load_case.hpp>
-#include <hooke/experiments/simulation.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <hooke/mesh/reorder.hpp>
+#include <hooke/model/load_case.hpp>
+#include <hooke/solve/simulation.hpp>
 #include <numeric>
 #include <string>
 
-namespace hooke::experiments {
+namespace hooke::solve {
 namespace {
 
 void check_options(const SimulationOptions& o, int dim, int nodes) {
-  solve::validate(o.dynamics);
+  validate(o.dynamics);
   if (o.steps < 1) throw InvalidArgument("the number of steps must be at least 1");
   if (o.probe_node < 0) return;
   const bool drive = o.probe_offset.size() > 0, push = o.probe_force.size() > 0;
@@ -30,17 +30,12 @@ void check_options(const SimulationOptions& o, int dim, int nodes) {
 
 [[noreturn]] void fail_step(const char* what, int k, const SimulationOptions& o, double limit) {
   throw SolverFailure("step " + std::to_string(k) + " " + what + " (" +
-                      std::string(solve::integrator_name(o.simulator.integrator)) + ", dt " +
-                      std::to_string(o.dynamics.dt) + " s; explicit stability limit " + std::to_string(limit) +
+                      std::string(integrator_name(o.simulator.integrator)) + ", dt " + std::to_string(o.dynamics.dt) +
+                      " s; explicit stability limit " + std::to_string(limit) +
                       " s): use a smaller dt or an implicit integrator");
 }
 
 }  // namespace
-
-double quantile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[static_cast<size_t>(q * static_cast<double>(v.size() - 1) + 0.5)];
-}
 
 SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const SimulationOptions& o,
                            const FrameSink& frames) {
@@ -60,16 +55,17 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
 
   model::Problem problem = model::make_problem(built.model);
   if (o.clamp_bottom && !cm.surface)
-    model::fix_nodes(problem, make_load_case(cm.mesh, LoadKind::kStretch, 0.0, cm.material.thickness).fixed_nodes);
-  solve::Simulator sim(problem, solve::make_dynamics(o.dynamics, cm.masses, d), o.simulator);
-  solve::Probe probe;
+    model::fix_nodes(problem,
+                     model::make_load_case(cm.mesh, model::LoadKind::kStretch, 0.0, cm.material.thickness).fixed_nodes);
+  Simulator sim(problem, make_dynamics(o.dynamics, cm.masses, d), o.simulator);
+  Probe probe;
   if (o.probe_node >= 0) {
     probe.nodes = {old_to_new[static_cast<size_t>(o.probe_node)]};
     probe.drive_position = o.probe_offset.size() > 0;
     probe.offset = probe.force = VecX::Zero(d);
     sim.set_probe(probe);
     if (built.volume_penalty) {  // the weights of Eq. 4 follow the probe (Arnab & Raja, Fig. 11)
-      const double radius = solve::influence_radius(o.dynamics, mesh::bounding_box_diagonal(cm.mesh));
+      const double radius = influence_radius(o.dynamics, mesh::bounding_box_diagonal(cm.mesh));
       const VecX& v = probe.drive_position ? o.probe_offset : o.probe_force;
       if (v.norm() > 0.0) {
         sim.problem().interaction = model::Interaction{cm.mesh.nodes.row(probe.nodes[0]).transpose(), Vec3(v), radius};
@@ -100,14 +96,14 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
       sim.set_probe(probe);
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const solve::StepReport r = sim.step(o.dynamics.dt);
+    const StepReport r = sim.step(o.dynamics.dt);
     s.step_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     if (!sim.positions().allFinite() || !sim.velocities().allFinite())
       fail_step("produced non-finite positions", k, o, s.stable_time_step);
     if (!r.converged && !o.allow_unconverged)
       throw SolverFailure("step " + std::to_string(k) + " ended above the Newton tolerance (residual " +
                           std::to_string(r.residual) + " N after " + std::to_string(r.iterations) + " iterations, " +
-                          std::string(solve::integrator_name(o.simulator.integrator)) +
+                          std::string(integrator_name(o.simulator.integrator)) +
                           "): use a smaller dt, more Newton iterations, or allow unconverged steps");
     s.not_converged += r.converged ? 0 : 1;
     s.iterations += r.iterations;
@@ -121,4 +117,4 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
   return s;
 }
 
-}  // namespace hooke::experiments
+}  // namespace hooke::solve

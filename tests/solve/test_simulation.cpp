@@ -8,11 +8,11 @@
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/calibrate/model_file.hpp>
 #include <hooke/core/error.hpp>
-#include <hooke/experiments/simulation.hpp>
 #include <hooke/mesh/generators.hpp>
+#include <hooke/solve/simulation.hpp>
 #include <thread>
 
-namespace hooke::experiments {
+namespace hooke::solve {
 namespace {
 
 calibrate::CalibratedModel cylinder(const std::string& method = "lloyd-tet") {
@@ -158,4 +158,4 @@ TEST(Simulator, LibraryRefusesInvalidOptions) {
 }
 
 }  // namespace
-}  // namespace hooke::experiments
+}  // namespace hooke::solve

@@ -1,13 +1,11 @@
 #pragma once
 /// The papers' load cases (Lloyd et al. 2007, Sec. 5): bottom clamped, a uniform dead traction on the top.
-#include <hooke/material/material.hpp>
 #include <hooke/mesh/mesh.hpp>
 #include <hooke/model/problem.hpp>
-#include <hooke/solve/static_equilibrium.hpp>
 #include <string_view>
 #include <vector>
 
-namespace hooke::experiments {
+namespace hooke::model {
 
 /// Stable names: "stretch", "compress", "shear".
 enum class LoadKind {
@@ -44,31 +42,9 @@ LoadCase make_load_case(const mesh::Mesh& mesh, LoadKind kind, double traction_p
 inline constexpr double kEndBand = 0.05;
 
 /// Applies a load case to a problem on the same mesh: clamps the fixed nodes and sets the forces.
-void apply(const LoadCase& load, model::Problem& problem);
+void apply(const LoadCase& load, Problem& problem);
 
 /// Mean displacement of the top nodes along the load direction, m.
-double mean_top_displacement(const LoadCase& load, const model::Problem& problem, const VecX& positions);
+double mean_top_displacement(const LoadCase& load, const Problem& problem, const VecX& positions);
 
-/// The traction (Pa) at which the linear FEM's mean top displacement along the load equals
-/// strain x height (the papers' "~12 % stretch"). One linear solve with a unit traction, scaled.
-/// @param materials  one material, or one per element (their law is ignored: the linear FEM decides)
-/// @pre strain > 0
-double traction_for_strain(const mesh::Mesh& mesh, const std::vector<material::Material>& materials, LoadKind kind,
-                           double strain);
-
-/// traction_for_strain's traction with the linear FEM's solution under it: the unit solve scaled by the traction
-/// (the FEM is linear), so a comparison against the linear FEM at a strain costs one factorisation, not two.
-struct StrainResponse {
-  double traction_pa = 0.0;  ///< Pa
-  solve::StaticResult fem;   ///< positions (m) under traction_pa; the report's forces and residuals scaled with it
-};
-/// @pre strain > 0 @throws as traction_for_strain
-StrainResponse linear_response_for_strain(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
-                                          LoadKind kind, double strain);
-/// linear_response_for_strain for each of `kinds` (which share their supports) from one factorisation.
-/// @pre strain > 0 @throws as traction_for_strain
-std::vector<StrainResponse> linear_responses_for_strain(const mesh::Mesh& mesh,
-                                                        const std::vector<material::Material>& materials,
-                                                        const std::vector<LoadKind>& kinds, double strain);
-
-}  // namespace hooke::experiments
+}  // namespace hooke::model

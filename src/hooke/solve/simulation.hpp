@@ -8,18 +8,18 @@
 #include <hooke/solve/simulator.hpp>
 #include <vector>
 
-namespace hooke::experiments {
+namespace hooke::solve {
 
 struct SimulationOptions {
-  solve::SimulatorOptions simulator;  ///< integrator and its settings
-  solve::DynamicsSetup dynamics;      ///< dt, gravity, Rayleigh damping, Eq. 4's radius
-  int steps = 100;                    ///< number of steps (>= 1)
-  int every = 0;                      ///< a frame every this many steps; 0: about 100 frames
-  bool clamp_bottom = true;           ///< clamp the nodes of the lowest face (not for a surface model)
-  bool reorder = true;                ///< simulate in reverse Cuthill-McKee order (same trajectory, faster)
-  int probe_node = -1;                ///< node grabbed by the probe, in the model's numbering (-1: none)
-  VecX probe_offset;                  ///< drive the probe node by this offset, m (dim), ramped linearly
-  VecX probe_force;                   ///< or push it with this force, N (dim), ramped linearly
+  SimulatorOptions simulator;  ///< integrator and its settings
+  DynamicsSetup dynamics;      ///< dt, gravity, Rayleigh damping, Eq. 4's radius
+  int steps = 100;             ///< number of steps (>= 1)
+  int every = 0;               ///< a frame every this many steps; 0: about 100 frames
+  bool clamp_bottom = true;    ///< clamp the nodes of the lowest face (not for a surface model)
+  bool reorder = true;         ///< simulate in reverse Cuthill-McKee order (same trajectory, faster)
+  int probe_node = -1;         ///< node grabbed by the probe, in the model's numbering (-1: none)
+  VecX probe_offset;           ///< drive the probe node by this offset, m (dim), ramped linearly
+  VecX probe_force;            ///< or push it with this force, N (dim), ramped linearly
   /// Keep going when a step ends above the Newton tolerance (counted in SimulationSummary::not_converged) instead
   /// of failing with SolverFailure at that step.
   bool allow_unconverged = false;
@@ -48,7 +48,4 @@ using FrameSink = std::function<void(int step, double time, const VecX& displace
 SimulationSummary simulate(const calibrate::CalibratedModel& model, const SimulationOptions& options,
                            const FrameSink& frames);
 
-/// Median (q = 0.5) or other quantile of `values` (nearest rank); 0 for none.
-double quantile(std::vector<double> values, double q);
-
-}  // namespace hooke::experiments
+}  // namespace hooke::solve

@@ -1,13 +1,11 @@
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/core/name_table.hpp>
-#include <hooke/experiments/load_case.hpp>
-#include <hooke/fem/elastic_block.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <hooke/mesh/topology.hpp>
-#include <hooke/solve/static_equilibrium.hpp>
+#include <hooke/model/load_case.hpp>
 
-namespace hooke::experiments {
+namespace hooke::model {
 
 namespace {
 constexpr NameTable<LoadKind, 3> kLoadKinds{
@@ -64,15 +62,15 @@ LoadCase make_load_case(const mesh::Mesh& mesh, LoadKind kind, double traction_p
   return lc;
 }
 
-void apply(const LoadCase& load, model::Problem& problem) {
+void apply(const LoadCase& load, Problem& problem) {
   if (load.nodal_forces.size() != problem.model->dof_count())
     throw InvalidArgument("load case and problem belong to different meshes");
-  model::fix_nodes(problem, load.fixed_nodes);
+  fix_nodes(problem, load.fixed_nodes);
   problem.external_force = load.nodal_forces;
-  model::zero_fixed_forces(problem);
+  zero_fixed_forces(problem);
 }
 
-double mean_top_displacement(const LoadCase& load, const model::Problem& problem, const VecX& positions) {
+double mean_top_displacement(const LoadCase& load, const Problem& problem, const VecX& positions) {
   const int d = problem.model->dim();
   const VecX u = positions - problem.model->rest_positions();
   double sum = 0.0;
@@ -80,51 +78,4 @@ double mean_top_displacement(const LoadCase& load, const model::Problem& problem
   return load.top_nodes.empty() ? 0.0 : sum / static_cast<double>(load.top_nodes.size());
 }
 
-double traction_for_strain(const mesh::Mesh& mesh, const std::vector<material::Material>& materials, LoadKind kind,
-                           double strain) {
-  return linear_response_for_strain(mesh, materials, kind, strain).traction_pa;
-}
-
-StrainResponse linear_response_for_strain(const mesh::Mesh& mesh, const std::vector<material::Material>& materials,
-                                          LoadKind kind, double strain) {
-  return std::move(linear_responses_for_strain(mesh, materials, {kind}, strain).front());
-}
-
-std::vector<StrainResponse> linear_responses_for_strain(const mesh::Mesh& mesh,
-                                                        const std::vector<material::Material>& materials,
-                                                        const std::vector<LoadKind>& kinds, double strain) {
-  if (!(strain > 0.0) || !std::isfinite(strain)) throw InvalidArgument("the strain must be a positive number");
-  model::Problem problem = model::make_problem(fem::linear_model(mesh, materials));
-  std::vector<LoadCase> units;
-  std::vector<VecX> forces;
-  for (LoadKind kind : kinds) {
-    units.push_back(make_load_case(mesh, kind, 1.0, materials.at(0).thickness));
-    // Every kind clamps the same bottom nodes (make_load_case), so one factorisation serves them all.
-    if (units.back().fixed_nodes != units.front().fixed_nodes)
-      throw InvalidArgument("linear_responses_for_strain: load cases with different supports");
-    forces.push_back(units.back().nodal_forces);
-  }
-  if (!units.empty()) model::fix_nodes(problem, units.front().fixed_nodes);
-  for (VecX& f : forces) model::zero_fixed_forces(problem.fixed_dofs, f);
-  std::vector<solve::StaticResult> fem = solve::linear_statics(problem, forces);
-  std::vector<StrainResponse> out;
-  const VecX& rest = problem.model->rest_positions();
-  for (size_t k = 0; k < kinds.size(); ++k) {
-    StrainResponse r;
-    r.fem = std::move(fem[k]);
-    solve::require_converged(r.fem.report);
-    const double u = mean_top_displacement(units[k], problem, r.fem.positions);
-    if (!(u > 0.0)) throw SolverFailure("the unit load produced no displacement along the load direction");
-    const double t = strain * units[k].height / u;
-    r.traction_pa = t;
-    r.fem.positions = rest + t * (r.fem.positions - rest);
-    solve::SolveReport& rep = r.fem.report;
-    rep.residual *= t;
-    rep.reference_force *= t;
-    for (double& h : rep.residual_history) h *= t;
-    out.push_back(std::move(r));
-  }
-  return out;
-}
-
-}  // namespace hooke::experiments
+}  // namespace hooke::model
