@@ -55,6 +55,34 @@ struct OwnerMark {
   OwnerMark& operator=(const OwnerMark&) = delete;
 };
 
+// A step's wall time [t0, t1] into `clock` and the stats: steps, overruns, wall time (s, pauses excluded), the rate
+// and whether it is behind, and now and then the percentiles.
+void record_step(PhysicsStats& st, StepClock& clock, Clock::time_point t0, Clock::time_point t1, double wall_time,
+                 double period, bool paced) {
+  const double step_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
+  clock.add(step_ms, t0, t1);
+  ++st.steps;
+  if (step_ms > 1e3 * period) ++st.overruns;
+  st.wall_time = wall_time;
+  // Steps per wall second over the last second (since the last pause while that is shorter); behind whenever
+  // that is below the target (1 % for the scheduler's wake-up jitter), paced or not.
+  st.achieved_rate = clock.rate(period, paced);
+  st.behind = st.achieved_rate < 0.99 / period;
+  if (clock.count % 100 == 1 || clock.count < 100) {  // percentiles now and then: sorting 1 000 values costs ~20 us
+    const std::vector<double> w = clock.window();
+    st.step_ms_median = quantile(w, 0.5);
+    st.step_ms_p99 = quantile(w, 0.99);
+  }
+}
+
+// Sleeps until `next` advanced by one period (s): one step per period of wall time. Behind by more than 50
+// periods, the backlog is dropped (the panel says it is behind) rather than run flat out to catch up.
+void pace(Clock::time_point& next, double period) {
+  next += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(period));
+  if (Clock::now() - next > std::chrono::duration<double>(50 * period)) next = Clock::now();
+  std::this_thread::sleep_until(next);
+}
+
 }  // namespace
 
 void apply_setting(LiveSettings& s, const std::string& key, const std::string& value) {
@@ -318,6 +346,29 @@ void PhysicsLoop::publish_haptic_model() {
   }
 }
 
+void PhysicsLoop::take_inputs() {
+  // A scripted drag ramps linearly in simulated time.
+  if (m_drag_t1 >= 0.0 && !m_sim.grabbed().empty()) {
+    const double f =
+        m_drag_t1 > m_drag_t0 ? std::clamp((m_sim.time() - m_drag_t0) / (m_drag_t1 - m_drag_t0), 0.0, 1.0) : 1.0;
+    m_sim.drag(m_drag_from + f * (m_drag_to - m_drag_from));
+    if (f >= 1.0) m_drag_t1 = -1.0;
+  }
+  {  // a haptic device's offset, the newest
+    std::unique_lock lock(m_haptic_mutex);
+    if (m_device_pending) {
+      m_device_pending = false;
+      const VecX offset = m_device_offset;
+      lock.unlock();
+      try {
+        m_sim.drag(offset);
+      } catch (const std::exception& e) {
+        m_work_stats.error = std::string("device offset: ") + e.what();
+      }
+    }
+  }
+}
+
 void PhysicsLoop::run_steps() {
   omp_set_num_threads(m_threads);  // this thread's parallel regions
   publish_haptic_model();          // the grab's, before the first step ends
@@ -338,26 +389,7 @@ void PhysicsLoop::run_steps() {
   };
   // One step (m_sim_mutex held), its wall time and the rate in the stats.
   const auto step_once = [&] {
-    // A scripted drag ramps linearly in simulated time.
-    if (m_drag_t1 >= 0.0 && !m_sim.grabbed().empty()) {
-      const double f =
-          m_drag_t1 > m_drag_t0 ? std::clamp((m_sim.time() - m_drag_t0) / (m_drag_t1 - m_drag_t0), 0.0, 1.0) : 1.0;
-      m_sim.drag(m_drag_from + f * (m_drag_to - m_drag_from));
-      if (f >= 1.0) m_drag_t1 = -1.0;
-    }
-    {  // a haptic device's offset, the newest
-      std::unique_lock lock(m_haptic_mutex);
-      if (m_device_pending) {
-        m_device_pending = false;
-        const VecX offset = m_device_offset;
-        lock.unlock();
-        try {
-          m_sim.drag(offset);
-        } catch (const std::exception& e) {
-          m_work_stats.error = std::string("device offset: ") + e.what();
-        }
-      }
-    }
+    take_inputs();
     PhysicsStats& st = m_work_stats;
     const Clock::time_point t0 = Clock::now();
     try {
@@ -370,21 +402,8 @@ void PhysicsLoop::run_steps() {
     }
     publish_haptic_model();
     const Clock::time_point t1 = Clock::now();
-    const double step_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
-    const double period = m_sim.settings().dynamics.dt;
-    clock.add(step_ms, t0, t1);
-    ++st.steps;
-    if (step_ms > 1e3 * period) ++st.overruns;
-    st.wall_time = std::chrono::duration<double>(t1 - start).count() - paused_seconds;
-    // Steps per wall second over the last second (since the last pause while that is shorter); behind whenever
-    // that is below the target (1 % for the scheduler's wake-up jitter), paced or not.
-    st.achieved_rate = clock.rate(period, m_realtime);
-    st.behind = st.achieved_rate < 0.99 / period;
-    if (clock.count % 100 == 1 || clock.count < 100) {  // percentiles now and then: sorting 1 000 values costs ~20 us
-      const std::vector<double> w = clock.window();
-      st.step_ms_median = quantile(w, 0.5);
-      st.step_ms_p99 = quantile(w, 0.99);
-    }
+    record_step(st, clock, t0, t1, std::chrono::duration<double>(t1 - start).count() - paused_seconds,
+                m_sim.settings().dynamics.dt, m_realtime);
   };
   enum class Outcome { kStepped, kDrawing, kPaused };
   for (;;) {
@@ -422,13 +441,7 @@ void PhysicsLoop::run_steps() {
       wait([this](std::unique_lock<std::mutex>& lock) { m_wake.wait_for(lock, std::chrono::milliseconds(5)); });
       continue;
     }
-    if (m_realtime) {
-      // One step per period of wall time. Behind by more than 50 periods: drop the backlog (the panel says we are
-      // behind) rather than running flat out to catch up.
-      next += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(period));
-      if (Clock::now() - next > std::chrono::duration<double>(50 * period)) next = Clock::now();
-      std::this_thread::sleep_until(next);
-    }
+    if (m_realtime) pace(next, period);
     while (m_waiters.load() > 0) std::this_thread::yield();  // let with() in before the next step takes the lock
   }
 }

@@ -110,6 +110,7 @@ class PhysicsLoop {
  private:
   void run();                   // the thread: run_steps, with any exception reported in PhysicsStats::error
   void run_steps();             // the loop
+  void take_inputs();           // the scripted drag's ramp and the device's newest offset, into the simulation
   void publish_haptic_model();  // the probe's local model for the haptic loop, after enable_haptics()
   void stage();                 // copies the simulation's state into m_staging (physics thread, m_sim_mutex held)
   void publish();               // m_staging becomes the latest snapshot (takes m_mutex)
