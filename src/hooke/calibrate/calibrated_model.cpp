@@ -47,9 +47,10 @@ namespace {
 std::string entry(const std::string& what, Eigen::Index i) { return what + "[" + std::to_string(i) + "]"; }
 
 struct Checker {
-  const std::string& source;
+  const ModelRejection& reject;
   [[noreturn]] void fail(const std::string& where, const std::string& why) const {
-    throw InvalidArgument(source + ": " + where + ": " + why);
+    reject(where, why);
+    throw InvalidArgument(where + ": " + why);  // a rejection that did not throw
   }
   void node(const std::string& where, int index, int nodes) const {
     if (index < 0 || index >= nodes)
@@ -104,8 +105,14 @@ void validate_surface(const SurfaceTerms& s, const Checker& c, int n) {
 
 }  // namespace
 
-void validate_model(const CalibratedModel& m, const std::string& source) {
-  const Checker c{source};
+void validate_model(const CalibratedModel& model, const std::string& source) {
+  validate_model(model, [&](const std::string& entry, const std::string& why) {
+    throw InvalidArgument(source + ": " + entry + ": " + why);
+  });
+}
+
+void validate_model(const CalibratedModel& m, const ModelRejection& reject) {
+  const Checker c{reject};
   const int n = m.mesh.node_count(), d = m.mesh.dim(), npe = mesh::nodes_per_element(m.mesh.kind);
   if (n == 0) c.fail("nodes", "the model has no nodes");
   if (m.mesh.nodes.cols() != d) c.fail("nodes", "need " + std::to_string(d) + " coordinates each");

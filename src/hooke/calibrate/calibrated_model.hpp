@@ -2,6 +2,7 @@
 /// A calibrated model as plain data: what `hooke calibrate` writes and `--model` reads back (docs/model_format.md).
 /// It holds everything the term blocks are built from, so that a model made here, in another program or by hand
 /// runs in every solver and comparison (DESIGN.md: "the model is data").
+#include <functional>
 #include <hooke/calibrate/spring_model.hpp>
 #include <hooke/material/material.hpp>
 #include <hooke/mesh/mesh.hpp>
@@ -79,6 +80,11 @@ ModelKind model_kind(const CalibratedModel& model);
 /// @param source  name used in messages (the file)
 /// @throws InvalidArgument naming `source` and the entry
 void validate_model(const CalibratedModel& model, const std::string& source);
+
+/// Receives validate_model's rejection: the entry ("springs[12]") and why; it must throw.
+using ModelRejection = std::function<void(const std::string& entry, const std::string& why)>;
+/// validate_model's checks with the rejection handed to `reject` (a model file's reader raises ParseError with it).
+void validate_model(const CalibratedModel& model, const ModelRejection& reject);
 
 /// Checks that `model` stands on `mesh`: the same node count and rest positions (within 1e-9 of the bounding-box
 /// diagonal), so that a model file is run on the mesh it was made for.

@@ -453,14 +453,7 @@ CalibratedModel model_from_json(const json& j, const std::string& source) {
     for (size_t i = 0; i < w.size(); ++i) m.warnings.push_back(r.string(w[i], Reader::at("warnings", i)));
   }
   if (j.contains("certificate")) m.certificate = read_certificate(r, j["certificate"]);
-  try {
-    validate_model(m, source);
-  } catch (const InvalidArgument& e) {  // "source: entry: why" -> the same as a ParseError
-    std::string what = e.what();
-    if (what.rfind(source + ": ", 0) == 0) what = what.substr(source.size() + 2);
-    const auto colon = what.find(": ");
-    throw ParseError::at_entry(source, what.substr(0, colon), colon == std::string::npos ? "" : what.substr(colon + 2));
-  }
+  validate_model(m, [&](const std::string& entry, const std::string& why) { r.fail(entry, why); });
   return m;
 }
 
