@@ -18,62 +18,151 @@ namespace {
 
 using nlohmann::json;
 
-// ---- writing: one row (node, element, spring) a line, numbers as nlohmann prints them (shortest round trip)
+// ---- writing: the document is built as JSON (the library that reads it) and laid out one row a line
 
-std::string num(double v) { return json(v).dump(); }
+using ordered = nlohmann::ordered_json;
 
-// Concatenation without `const char* + std::string&&`, on which GCC 12 raises a false -Wrestrict.
-std::string join(std::initializer_list<std::string_view> parts) {
-  std::string out;
-  for (const std::string_view p : parts) out += p;
-  return out;
-}
-std::string str(const std::string& s) { return json(s).dump(); }
+std::string num(double v) { return json(v).dump(); }  // as nlohmann prints a number: the shortest round trip
 
-template <typename RowFn>
-void rows(std::ostream& out, const char* key, Eigen::Index count, RowFn&& row, bool last = false) {
-  out << "  \"" << key << "\": [";
-  for (Eigen::Index i = 0; i < count; ++i) out << (i ? ",\n    " : "\n    ") << row(i);
-  out << (count ? "\n  ]" : "]") << (last ? "\n" : ",\n");
-}
-
-std::string vec_row(const RowMatX& m, Eigen::Index i) {
-  std::string s = "[";
-  for (Eigen::Index c = 0; c < m.cols(); ++c) s += (c ? ", " : "") + num(m(i, c));
-  return s + "]";
+// A matrix (node coordinates, element indices) as an array of rows.
+template <typename Matrix>
+ordered rows_of(const Matrix& m) {
+  ordered rows = ordered::array();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    ordered row = ordered::array();
+    for (Eigen::Index c = 0; c < m.cols(); ++c) row.push_back(m(i, c));
+    rows.push_back(std::move(row));
+  }
+  return rows;
 }
 
-std::string int_row(const RowMatXi& m, Eigen::Index i) {
-  std::string s = "[";
-  for (Eigen::Index c = 0; c < m.cols(); ++c) s += (c ? ", " : "") + std::to_string(m(i, c));
-  return s + "]";
-}
-
-void write_surface(std::ostream& out, const SurfaceTerms& s) {
-  out << "  \"surface\": {\n    \"scheme\": " << str(s.scheme) << ",\n    \"centre\": [" << num(s.centre(0)) << ", "
-      << num(s.centre(1)) << ", " << num(s.centre(2))
-      << "],\n    \"anchor_law\": " << str(std::string(surface::anchor_law_name(s.anchor_law)))
-      << ",\n    \"anchors\": [";
+ordered surface_document(const SurfaceTerms& s) {
+  ordered out;
+  out["scheme"] = s.scheme;
+  out["centre"] = {s.centre(0), s.centre(1), s.centre(2)};
+  out["anchor_law"] = std::string(surface::anchor_law_name(s.anchor_law));
+  ordered anchors = ordered::array();
   for (Eigen::Index i = 0; i < s.k_normal.size(); ++i) {
-    out << (i ? ",\n      [" : "\n      [") << num(s.k_normal(i)) << ", " << num(s.k_shear(i)) << ", "
-        << num(s.normals(i, 0)) << ", " << num(s.normals(i, 1)) << ", " << num(s.normals(i, 2));
+    ordered row = {s.k_normal(i), s.k_shear(i), s.normals(i, 0), s.normals(i, 1), s.normals(i, 2)};
     // A crease node's normal cone follows its normal; a smooth node's is N N^T and is not written.
     const surface::ConeRow smooth = surface::smooth_cone(s.normals.row(i).transpose());
     if ((s.normal_cones.row(i) - smooth).cwiseAbs().maxCoeff() > 1e-12)
-      for (int k = 0; k < 6; ++k) out << ", " << num(s.normal_cones(i, k));
-    out << "]";
+      for (int k = 0; k < 6; ++k) row.push_back(s.normal_cones(i, k));
+    anchors.push_back(std::move(row));
   }
-  out << "\n    ],\n    \"volume_penalty\": ";
+  out["anchors"] = std::move(anchors);
   if (!s.volume_penalty) {
-    out << "null\n  },\n";
-    return;
+    out["volume_penalty"] = nullptr;
+    return out;
   }
-  out << "{\n      \"force\": " << str(std::string(surface::volume_force_name(s.volume_force)))
-      << ",\n      \"rest_volume\": " << num(s.rest_volume) << ",\n      \"bulk_modulus\": " << num(s.bulk_modulus)
-      << ",\n      \"nodes\": [";
-  for (Eigen::Index i = 0; i < s.k_bulk.size(); ++i)
-    out << (i ? ",\n        [" : "\n        [") << num(s.k_bulk(i)) << ", " << num(s.normal_length(i)) << "]";
-  out << "\n      ]\n    }\n  },\n";
+  ordered penalty;
+  penalty["force"] = std::string(surface::volume_force_name(s.volume_force));
+  penalty["rest_volume"] = s.rest_volume;
+  penalty["bulk_modulus"] = s.bulk_modulus;
+  ordered nodes = ordered::array();
+  for (Eigen::Index i = 0; i < s.k_bulk.size(); ++i) nodes.push_back({s.k_bulk(i), s.normal_length(i)});
+  penalty["nodes"] = std::move(nodes);
+  out["volume_penalty"] = std::move(penalty);
+  return out;
+}
+
+ordered model_document(const CalibratedModel& m) {
+  const int d = m.mesh.dim();
+  const material::Material& mat = m.material;
+  ordered j;
+  j["format"] = "hooke-model";
+  j["schema_version"] = kModelSchemaVersion;
+  j["hooke_version"] = std::string(kVersion);
+  j["method"] = m.method;
+  j["equation"] = m.equation;
+  if (!m.choice.empty()) j["method_choice"] = m.choice;
+  if (!m.meshing.empty()) j["meshing"] = m.meshing;
+  j["source_mesh"] = m.mesh.source;
+  j["units"] = {{"length", "m"}, {"stiffness", "N/m"}, {"mass", "kg"}, {"volume_stiffness", "J"}};
+  j["material"] = {{"law", std::string(material::law_name(mat.law))},
+                   {"youngs_modulus", mat.youngs_modulus},
+                   {"poisson_ratio", mat.poisson_ratio},
+                   {"plane", std::string(material::plane_name(mat.plane))},
+                   {"thickness", mat.thickness},
+                   {"density", m.density}};
+  j["element_kind"] = std::string(mesh::element_kind_name(m.mesh.kind));
+  j["nodes"] = rows_of(m.mesh.nodes);
+  j["elements"] = rows_of(m.mesh.elements);
+  ordered masses = ordered::array();
+  for (int i = 0; i < m.mesh.node_count(); ++i) masses.push_back(m.masses(d * i));
+  j["masses"] = std::move(masses);
+  const SpringModel& s = m.springs;
+  ordered springs = ordered::array();
+  for (size_t k = 0; k < s.pairs.size(); ++k) {
+    const auto e = static_cast<Eigen::Index>(k);
+    springs.push_back({s.pairs[k][0], s.pairs[k][1], s.stiffness(e), s.rest_length(e)});
+  }
+  j["springs"] = std::move(springs);
+  ordered volume = rows_of(s.volume_tets);
+  for (Eigen::Index t = 0; t < s.volume_tets.rows(); ++t) {
+    volume[static_cast<size_t>(t)].push_back(s.volume_stiffness(t));
+    volume[static_cast<size_t>(t)].push_back(s.rest_volume(t));
+  }
+  j["volume_terms"] = std::move(volume);
+  j["surface"] = m.surface ? surface_document(*m.surface) : ordered(nullptr);
+  j["warnings"] = m.warnings;
+  ordered certificate = ordered::array();
+  for (const CertificateCase& c : m.certificate)
+    certificate.push_back({{"load", c.load},
+                           {"strain", c.strain},
+                           {"max_error", c.max_error},
+                           {"mean_error", c.mean_error},
+                           {"relative_l2", c.relative_l2}});
+  j["certificate"] = std::move(certificate);
+  return j;
+}
+
+// One line: ", " between entries and ": " after keys; numbers and strings as nlohmann prints them.
+void write_inline(std::ostream& out, const ordered& v) {
+  if (v.is_array()) {
+    out << '[';
+    for (size_t k = 0; k < v.size(); ++k) {
+      if (k) out << ", ";
+      write_inline(out, v[k]);
+    }
+    out << ']';
+  } else if (v.is_object()) {
+    out << '{';
+    bool first = true;
+    for (const auto& [key, value] : v.items()) {
+      out << (first ? "" : ", ") << json(key).dump() << ": ";
+      write_inline(out, value);
+      first = false;
+    }
+    out << '}';
+  } else {
+    out << v.dump();
+  }
+}
+
+// A block object (the document, its surface and volume penalty): a key a line at indent + 2; its arrays (but the
+// centre) one row a line at indent + 4, every other value on one line.
+void write_block(std::ostream& out, const ordered& block, int indent) {
+  const std::string pad(static_cast<size_t>(indent + 2), ' ');
+  out << "{\n";
+  bool first = true;
+  for (const auto& [key, value] : block.items()) {
+    out << (first ? "" : ",\n") << pad << json(key).dump() << ": ";
+    first = false;
+    if (value.is_object() && (key == "surface" || key == "volume_penalty")) {
+      write_block(out, value, indent + 2);
+    } else if (value.is_array() && !value.empty() && key != "centre") {
+      out << '[';
+      for (size_t k = 0; k < value.size(); ++k) {
+        out << (k ? ",\n" : "\n") << pad << "  ";
+        write_inline(out, value[k]);
+      }
+      out << "\n" << pad << ']';
+    } else {
+      write_inline(out, value);
+    }
+  }
+  out << "\n" << std::string(static_cast<size_t>(indent), ' ') << '}';
 }
 
 // ---- reading: every access names the entry it failed on
@@ -297,49 +386,8 @@ std::vector<CertificateCase> read_certificate(const Reader& r, const json& j) {
 std::string model_json(const CalibratedModel& m) {
   validate_model(m, m.mesh.source.empty() ? std::string("the model") : m.mesh.source);
   std::ostringstream out;
-  const int d = m.mesh.dim();
-  const material::Material& mat = m.material;
-  out << "{\n  \"format\": \"hooke-model\",\n  \"schema_version\": " << kModelSchemaVersion
-      << ",\n  \"hooke_version\": " << str(std::string(kVersion)) << ",\n  \"method\": " << str(m.method)
-      << ",\n  \"equation\": " << str(m.equation);
-  if (!m.choice.empty()) out << ",\n  \"method_choice\": " << str(m.choice);
-  if (!m.meshing.empty()) out << ",\n  \"meshing\": " << str(m.meshing);
-  out << ",\n  \"source_mesh\": " << str(m.mesh.source)
-      << ",\n  \"units\": {\"length\": \"m\", \"stiffness\": \"N/m\", \"mass\": \"kg\", \"volume_stiffness\": \"J\"}"
-      << ",\n  \"material\": {\"law\": " << str(std::string(material::law_name(mat.law)))
-      << ", \"youngs_modulus\": " << num(mat.youngs_modulus) << ", \"poisson_ratio\": " << num(mat.poisson_ratio)
-      << ", \"plane\": " << str(std::string(material::plane_name(mat.plane)))
-      << ", \"thickness\": " << num(mat.thickness) << ", \"density\": " << num(m.density)
-      << "},\n  \"element_kind\": " << str(std::string(mesh::element_kind_name(m.mesh.kind))) << ",\n";
-  rows(out, "nodes", m.mesh.node_count(), [&](Eigen::Index i) { return vec_row(m.mesh.nodes, i); });
-  rows(out, "elements", m.mesh.element_count(), [&](Eigen::Index i) { return int_row(m.mesh.elements, i); });
-  rows(out, "masses", m.mesh.node_count(), [&](Eigen::Index i) { return num(m.masses(d * i)); });
-  const SpringModel& s = m.springs;
-  rows(out, "springs", static_cast<Eigen::Index>(s.pairs.size()), [&](Eigen::Index k) {
-    const auto& p = s.pairs[static_cast<size_t>(k)];
-    return join({"[", std::to_string(p[0]), ", ", std::to_string(p[1]), ", ", num(s.stiffness(k)), ", ",
-                 num(s.rest_length(k)), "]"});
-  });
-  rows(out, "volume_terms", s.volume_tets.rows(), [&](Eigen::Index t) {
-    std::string row = "[";
-    for (Eigen::Index c = 0; c < s.volume_tets.cols(); ++c) row += std::to_string(s.volume_tets(t, c)) + ", ";
-    return row + num(s.volume_stiffness(t)) + ", " + num(s.rest_volume(t)) + "]";
-  });
-  if (m.surface)
-    write_surface(out, *m.surface);
-  else
-    out << "  \"surface\": null,\n";
-  rows(out, "warnings", static_cast<Eigen::Index>(m.warnings.size()),
-       [&](Eigen::Index i) { return str(m.warnings[static_cast<size_t>(i)]); });
-  rows(
-      out, "certificate", static_cast<Eigen::Index>(m.certificate.size()),
-      [&](Eigen::Index i) {
-        const CertificateCase& c = m.certificate[static_cast<size_t>(i)];
-        return join({"{\"load\": ", str(c.load), ", \"strain\": ", num(c.strain), ", \"max_error\": ", num(c.max_error),
-                     ", \"mean_error\": ", num(c.mean_error), ", \"relative_l2\": ", num(c.relative_l2), "}"});
-      },
-      true);
-  out << "}\n";
+  write_block(out, model_document(m), 0);
+  out << '\n';
   return out.str();
 }
 
