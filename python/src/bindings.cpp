@@ -10,7 +10,9 @@ PYBIND11_MODULE(_hooke, m) {
   hooke::python::define_error(m);
   hooke::python::define_mesh(m);
   hooke::python::define_material(m);
-  hooke::python::define_model(m);
+  hooke::python::define_calibrated_model(m);
+  hooke::python::define_model_factory(m);
+  hooke::python::define_model_file(m);
   hooke::python::define_compare(m);
   hooke::python::define_reproduce(m);
   hooke::python::define_identify(m);

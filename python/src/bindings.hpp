@@ -7,7 +7,9 @@ namespace hooke::python {
 void define_error(pybind11::module_& m);
 void define_mesh(pybind11::module_& m);
 void define_material(pybind11::module_& m);
-void define_model(pybind11::module_& m);
+void define_calibrated_model(pybind11::module_& m);
+void define_model_factory(pybind11::module_& m);
+void define_model_file(pybind11::module_& m);
 void define_compare(pybind11::module_& m);
 void define_reproduce(pybind11::module_& m);
 void define_identify(pybind11::module_& m);

@@ -1,17 +1,12 @@
-// Calibration and model files: hooke.calibrate / methods / read_model / write_model / certify, and hooke.Model,
-// whose spring arrays are numpy views of the C++ model (no copies).
+// hooke.Model: a calibrated model, whose spring arrays are numpy views of the C++ model (no copies).
 #include <pybind11/stl.h>
-#include <pybind11/stl/filesystem.h>
 #include <bindings.hpp>
+#include <calibrate/calibrated_model.hpp>
 #include <core/arrays.hpp>
-#include <hooke/calibrate/model_factory.hpp>
-#include <hooke/calibrate/model_file.hpp>
-#include <hooke/experiments/compare.hpp>
 
 namespace py = pybind11;
 
 namespace hooke::python {
-namespace {
 
 using calibrate::CalibratedModel;
 
@@ -25,9 +20,7 @@ py::dict certificate_case(const calibrate::CertificateCase& c) {
   return d;
 }
 
-}  // namespace
-
-void define_model(py::module_& m) {
+void define_calibrated_model(py::module_& m) {
   py::class_<CalibratedModel>(m, "Model",
                               "A calibrated model: its mesh, springs (pairs, stiffness N/m, rest_length m), tet volume "
                               "terms, lumped masses (kg), the material, the method and its validity warnings.")
@@ -91,58 +84,6 @@ void define_model(py::module_& m) {
         return "<hooke.Model " + c.method + ", " + std::to_string(c.mesh.node_count()) + " nodes, " +
                std::to_string(c.springs.pairs.size()) + " springs>";
       });
-
-  m.def("methods", &calibrate::model_method_names,
-        "The stable names calibrate() accepts: the calibration methods, then 'surface' and 'fem'.");
-  m.def("method_equation", &calibrate::method_equation, py::arg("method"),
-        "Where the constants of `method` come from (paper and equation).");
-  m.def(
-      "_calibrate",
-      [](const mesh::Mesh& mesh, const material::Material& material, const std::string& method, double density,
-         const mesh::TetrahedralizeOptions& tetrahedralize) {
-        calibrate::ModelOptions o;
-        o.method = method;
-        o.density = density;
-        o.tetrahedralize = tetrahedralize;
-        py::gil_scoped_release release;
-        return calibrate::calibrate_model(mesh, material, o);
-      },
-      py::arg("mesh"), py::arg("material"), py::arg("method"), py::arg("density"), py::arg("tetrahedralize"));
-  m.def(
-      "read_model",
-      [](const std::filesystem::path& path) {
-        py::gil_scoped_release release;
-        return calibrate::read_model(path);
-      },
-      py::arg("path"),
-      "Reads a model file (.json, schema of docs/model_format.md). Raises ParseError naming the file and the entry.");
-  m.def(
-      "write_model",
-      [](const std::filesystem::path& path, const CalibratedModel& model) {
-        calibrate::validate_model(model, path.string());
-        calibrate::write_model(path, model);
-      },
-      py::arg("path"), py::arg("model"),
-      "Writes the model as .json, .vtu (springs as lines) or .csv by extension, atomically.");
-  m.def(
-      "certify",
-      [](CalibratedModel& model, double strain, int layers, const std::vector<std::string>& loads) {
-        std::vector<model::LoadKind> kinds;
-        for (const auto& name : loads) kinds.push_back(model::load_kind_from_name(name));
-        std::vector<calibrate::CertificateCase> cases;
-        {
-          py::gil_scoped_release release;
-          cases = experiments::certify(model, strain, layers, kinds);
-        }
-        model.certificate = cases;
-        py::list l;
-        for (const auto& k : cases) l.append(certificate_case(k));
-        return l;
-      },
-      py::arg("model"), py::arg("strain") = 0.01, py::arg("layers") = 4,
-      py::arg("loads") = std::vector<std::string>{"stretch", "compress", "shear"},
-      "Stretch, compress and shear (or the `loads` named) at mean linear-FEM strain `strain` against the linear FEM: "
-      "per case max / mean node error (m) and relative L2. Stored in model.certificate (written with the model).");
 }
 
 }  // namespace hooke::python
