@@ -5,6 +5,7 @@ import re
 import sys
 
 ORDER = ["core", "mesh", "io", "material", "model", "fem", "springs", "surface", "calibrate", "solve", "identify", "experiments", "interactive"]
+# calibrate sits below solve: its solves are linear (core's SparseCholesky), and solve::simulate builds models by name.
 # fem, springs and surface are siblings: none may include another.
 SIBLINGS = {"fem", "springs", "surface"}
 

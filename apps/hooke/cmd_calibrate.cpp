@@ -2,7 +2,7 @@
 // model as a file (.json, .vtu, .csv; docs/model_format.md), optionally with its measured error against FEM.
 #include <cstdio>
 #include <hooke/calibrate/model_file.hpp>
-#include <hooke/experiments/compare.hpp>
+#include <hooke/experiments/certify.hpp>
 #include <memory>
 #include <string>
 

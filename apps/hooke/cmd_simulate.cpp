@@ -30,7 +30,8 @@ void print_summary(const SimulateCli& o, const calibrate::CalibratedModel& model
                    const std::string& pvd, int frames) {
   const auto steps = static_cast<double>(s.step_ms.size());
   std::printf("hooke simulate: %s, %d nodes, %s model, %s, dt %.3g s, %zu steps (%.4g s)\n", model.mesh.source.c_str(),
-              model.mesh.node_count(), model.method.c_str(), o.integrator.integrator.c_str(), o.run.dynamics.dt,
+              model.mesh.node_count(), model.method.c_str(),
+              std::string(solve::integrator_name(o.run.simulator.integrator)).c_str(), o.run.dynamics.dt,
               s.step_ms.size(), s.time);
   std::printf("  time      %.4g ms/step median, %.4g ms/step p95; %.3g solver iterations per step\n",
               quantile(s.step_ms, 0.5), quantile(s.step_ms, 0.95), static_cast<double>(s.iterations) / steps);

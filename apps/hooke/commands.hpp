@@ -63,15 +63,15 @@ void add_model_source_options(CLI::App* cmd, ModelSource& in);
 /// @throws InvalidArgument when neither or a conflicting combination is given
 calibrate::CalibratedModel load_model(const ModelSource& in);
 
-/// The time integrator and its options by name, as `simulate` and `view` take them.
+/// The time integrator and its options as given on the command line (solve::simulator_fields(), in its order;
+/// empty: not given).
 struct IntegratorInput {
-  std::string integrator = "quasi-newton", linear_solver = "cholesky", global_solve = "direct", qn_hessian = "auto";
+  std::vector<std::string> values;
 };
-/// Registers --integrator, --linear-solver, --cg-tolerance, --newton-tolerance, --newton-iterations, --global-solve,
-/// --iterations, --qn-iterations, --qn-tolerance and --qn-hessian on `cmd`: the names bound to `in`, the numbers to
-/// `options` (whose values are the defaults shown).
-void add_integrator_options(CLI::App* cmd, IntegratorInput& in, solve::SimulatorOptions& options);
-/// Sets the named choices of `in` in `options`. @throws InvalidArgument for an unknown name
+/// Registers every solve::simulator_fields() entry as --NAME on `cmd` (--integrator, --qn-iterations,
+/// --cg-tolerance, ...), the defaults shown being `options`' values; the text given lands in `in`.
+void add_integrator_options(CLI::App* cmd, IntegratorInput& in, const solve::SimulatorOptions& options);
+/// Sets the fields given in `in` on `options`. @throws InvalidArgument for an unknown name or a malformed number
 void apply_integrator_names(const IntegratorInput& in, solve::SimulatorOptions& options);
 
 /// Registers every solve::dynamics_fields() entry as --NAME on `cmd` (--dt, --gravity, --damping-mass, ...), bound

@@ -7,6 +7,7 @@
 #include <hooke/core/error.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/io/mesh_io.hpp>
+#include <hooke/solve/simulator_settings.hpp>
 
 #include "commands.hpp"
 
@@ -179,48 +180,18 @@ void add_dynamics_options(CLI::App* cmd, solve::DynamicsSetup& setup) {
   }
 }
 
-void add_integrator_options(CLI::App* cmd, IntegratorInput& in, solve::SimulatorOptions& options) {
-  cmd->add_option("--integrator", in.integrator,
-                  "quasi-newton (every model at a fixed budget per step, the real-time default), implicit-euler "
-                  "(Newton to convergence), implicit-euler-linearised (one Newton iteration, Baraff & Witkin), "
-                  "local-global (springs only; chebyshev: see docs/simulation.md for its measured error), "
-                  "symplectic-euler, velocity-verlet, quasi-static")
-      ->capture_default_str();
-  cmd->add_option("--qn-iterations", options.quasi_newton.max_iterations,
-                  "quasi-newton: L-BFGS iterations per step at most (the budget)")
-      ->capture_default_str();
-  cmd->add_option("--qn-tolerance", options.quasi_newton.tolerance,
-                  "quasi-newton: |residual| / force scale to stop a step")
-      ->capture_default_str();
-  cmd->add_option("--qn-hessian", in.qn_hessian,
-                  "quasi-newton: initial Hessian, rest (the Newton matrix at rest), isotropic (a per-node "
-                  "factor, 3x cheaper to solve, more iterations) or auto (rest where the model's Hessian is exact, "
-                  "isotropic for the surface model's approximate one)")
-      ->capture_default_str();
-  cmd->add_option("--linear-solver", in.linear_solver, "Newton steps: cholesky or cg")->capture_default_str();
-  cmd->add_option("--cg-tolerance", options.newton.cg_tolerance,
-                  "cg: relative residual of the linear solves (implicit-euler-linearised: the whole step's)")
-      ->capture_default_str();
-  cmd->add_option("--newton-tolerance", options.newton.tolerance,
-                  "implicit-euler, quasi-static: |residual| / force scale to stop Newton")
-      ->capture_default_str();
-  cmd->add_option("--newton-iterations", options.newton.max_iterations,
-                  "implicit-euler, quasi-static: Newton iterations per step at most")
-      ->capture_default_str();
-  cmd->add_option("--global-solve", in.global_solve,
-                  "local-global: chebyshev (Chebyshev-accelerated Jacobi; measured 1.6e-3 of the largest displacement "
-                  "off a converged step on the 1 089-node cylinder, lloyd-tet at nu 0.45, 300 steps, hooke bench) or "
-                  "direct (prefactored Cholesky, 2.6e-5 there)")
-      ->capture_default_str();
-  cmd->add_option("--iterations", options.local_global_iterations, "local-global: iterations per step")
-      ->capture_default_str();
+void add_integrator_options(CLI::App* cmd, IntegratorInput& in, const solve::SimulatorOptions& options) {
+  const std::span<const solve::SimulatorField> fields = solve::simulator_fields();
+  in.values.assign(fields.size(), std::string());
+  for (size_t k = 0; k < fields.size(); ++k)
+    cmd->add_option("--" + std::string(fields[k].name), in.values[k], std::string(fields[k].help))
+        ->default_str(fields[k].get(options));
 }
 
 void apply_integrator_names(const IntegratorInput& in, solve::SimulatorOptions& options) {
-  options.integrator = solve::integrator_from_name(in.integrator);
-  options.newton.linear_solver = solve::newton_linear_solver_from_name(in.linear_solver);
-  options.global_solve = solve::global_solve_from_name(in.global_solve);
-  options.quasi_newton.initial_hessian = solve::quasi_newton_hessian_from_name(in.qn_hessian);
+  const std::span<const solve::SimulatorField> fields = solve::simulator_fields();
+  for (size_t k = 0; k < in.values.size() && k < fields.size(); ++k)
+    if (!in.values[k].empty()) fields[k].set(options, in.values[k]);
 }
 
 }  // namespace hooke::cli

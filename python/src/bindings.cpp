@@ -14,6 +14,7 @@ PYBIND11_MODULE(_hooke, m) {
   hooke::python::define_model_factory(m);
   hooke::python::define_model_file(m);
   hooke::python::define_compare(m);
+  hooke::python::define_certify(m);
   hooke::python::define_reproduce(m);
   hooke::python::define_identify(m);
   hooke::python::define_static_equilibrium(m);

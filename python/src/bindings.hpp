@@ -11,6 +11,7 @@ void define_calibrated_model(pybind11::module_& m);
 void define_model_factory(pybind11::module_& m);
 void define_model_file(pybind11::module_& m);
 void define_compare(pybind11::module_& m);
+void define_certify(pybind11::module_& m);
 void define_reproduce(pybind11::module_& m);
 void define_identify(pybind11::module_& m);
 void define_static_equilibrium(pybind11::module_& m);

@@ -55,6 +55,25 @@ def test_simulator_views_and_probe():
     assert sim.probe_force == [0.0, 0.0, 0.0]
 
 
+def test_simulator_settings_by_name():
+    # The integrator's options by the names `hooke simulate` takes (solve::simulator_fields), dashes as underscores:
+    # a Newton budget of one iteration leaves an implicit step short of its tolerance, the default converges.
+    mesh, model = cylinder_problem()
+    p = hooke.Problem(model)
+    p.apply_load("stretch", traction=0.0)
+    reports = {}
+    for budget in (None, 1):
+        extra = {} if budget is None else {"newton_iterations": budget, "newton_tolerance": 1e-12}
+        sim = hooke.Simulator(p, "implicit-euler", gravity=[0.0, 0.0, -9.81], linear_solver="cg", **extra)
+        reports[budget] = sim.step(1e-2)
+    assert reports[None].converged
+    assert not reports[1].converged and reports[1].iterations == 1
+    with pytest.raises(TypeError, match="newton_iteration"):
+        hooke.Simulator(p, "implicit-euler", newton_iteration=3)
+    with pytest.raises(ValueError, match="integer"):
+        hooke.Simulator(p, "implicit-euler", newton_iterations=2.5)
+
+
 def test_docstrings_say_units():
     assert "Pa" in hooke.Material.__init__.__doc__
     assert "N/m" in hooke.calibrate.__doc__

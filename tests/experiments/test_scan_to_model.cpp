@@ -7,7 +7,7 @@
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/core/error.hpp>
-#include <hooke/experiments/compare.hpp>
+#include <hooke/experiments/certify.hpp>
 #include <hooke/io/mesh_io.hpp>
 #include <hooke/solve/simulation.hpp>
 

@@ -1,5 +1,5 @@
 // hooke.compare: a calibrated model against the FEM reference under one load case, both displacement fields and
-// the node errors; hooke.certify: the certificate a model is shipped with.
+// the node errors.
 #include <pybind11/stl.h>
 #include <bindings.hpp>
 #include <calibrate/calibrated_model.hpp>
@@ -51,25 +51,6 @@ void define_compare(py::module_& m) {
       "The model and the FEM (law `reference`: linear, stvk, neohookean) under the load case 'stretch', 'compress' "
       "or 'shear' at mean linear-FEM `strain` or `traction` (Pa); the surface model against tets of `layers` "
       "layers. Returns a Comparison.");
-  m.def(
-      "certify",
-      [](calibrate::CalibratedModel& model, double strain, int layers, const std::vector<std::string>& loads) {
-        std::vector<model::LoadKind> kinds;
-        for (const auto& name : loads) kinds.push_back(model::load_kind_from_name(name));
-        std::vector<calibrate::CertificateCase> cases;
-        {
-          py::gil_scoped_release release;
-          cases = experiments::certify(model, strain, layers, kinds);
-        }
-        model.certificate = cases;
-        py::list l;
-        for (const auto& k : cases) l.append(certificate_case(k));
-        return l;
-      },
-      py::arg("model"), py::arg("strain") = 0.01, py::arg("layers") = 4,
-      py::arg("loads") = std::vector<std::string>{"stretch", "compress", "shear"},
-      "Stretch, compress and shear (or the `loads` named) at mean linear-FEM strain `strain` against the linear FEM: "
-      "per case max / mean node error (m) and relative L2. Stored in model.certificate (written with the model).");
 }
 
 }  // namespace hooke::python

@@ -1,10 +1,13 @@
 // Dynamics: hooke.Simulator over a Problem, with positions / velocities as zero-copy read-only views, the probe
 // (grab, drive, push, release, probe_force), and the GIL released inside step().
 #include <pybind11/stl.h>
+
+#include <algorithm>
 #include <bindings.hpp>
 #include <chrono>
 #include <core/arrays.hpp>
 #include <hooke/solve/simulator.hpp>
+#include <hooke/solve/simulator_settings.hpp>
 #include <optional>
 #include <solve/problem.hpp>
 
@@ -39,33 +42,30 @@ void define_simulator(py::module_& m) {
   const auto positions = [](PySimulator& s) -> const VecX& { return s.sim.positions(); };
   const auto velocities = [](PySimulator& s) -> const VecX& { return s.sim.velocities(); };
   py::class_<PySimulator>(m, "Simulator", "Steps a Problem in time (solve::Simulator).")
-      .def(py::init([](const ProblemData& p, const std::string& integrator, const std::string& linear_solver,
-                       int iterations, const std::string& global_solve, const py::object& gravity, double damping_mass,
-                       double damping_stiffness, double cg_tolerance, int qn_iterations, double qn_tolerance,
-                       const std::string& qn_hessian) {
+      .def(py::init([](const ProblemData& p, const std::string& integrator, const py::object& gravity,
+                       double damping_mass, double damping_stiffness, const py::kwargs& settings) {
              solve::SimulatorOptions o;
-             o.quasi_newton.max_iterations = qn_iterations;
-             o.quasi_newton.tolerance = qn_tolerance;
-             o.quasi_newton.initial_hessian = solve::quasi_newton_hessian_from_name(qn_hessian);
              o.integrator = solve::integrator_from_name(integrator);
-             o.newton.linear_solver = solve::newton_linear_solver_from_name(linear_solver);
-             o.newton.cg_tolerance = cg_tolerance;
-             o.local_global_iterations = iterations;
-             o.global_solve = solve::global_solve_from_name(global_solve);
+             for (const auto& [key, value] : settings) {  // solve::simulator_fields(), dashes as underscores
+               std::string name = py::str(key);
+               std::replace(name.begin(), name.end(), '_', '-');
+               if (!solve::set_simulator_field(o, name, std::string(py::str(value))))
+                 throw py::type_error("Simulator: unknown setting '" + std::string(py::str(key)) + "'");
+             }
              const int d = p.problem.model->dim();
              solve::Dynamics dyn{p.model.masses, gravity.is_none() ? VecX() : vector_argument(gravity, "gravity", d),
                                  damping_mass, damping_stiffness};
              return new PySimulator{solve::Simulator(p.problem, dyn, o), {}, {}, d};
            }),
-           py::arg("problem"), py::arg("integrator") = "quasi-newton", py::arg("linear_solver") = "cholesky",
-           py::arg("iterations") = 10, py::arg("global_solve") = "direct", py::arg("gravity") = py::none(),
-           py::arg("damping_mass") = 0.0, py::arg("damping_stiffness") = 0.0, py::arg("cg_tolerance") = 1e-6,
-           py::arg("qn_iterations") = solve::QuasiNewtonOptions{}.max_iterations,
-           py::arg("qn_tolerance") = solve::QuasiNewtonOptions{}.tolerance, py::arg("qn_hessian") = "auto",
-           "Simulator(problem, integrator='quasi-newton', ...): integrator one of quasi-newton (every model, at most "
-           "qn_iterations L-BFGS iterations per step), symplectic-euler, velocity-verlet, implicit-euler, "
-           "implicit-euler-linearised, local-global (springs only), quasi-static; masses from the model; gravity "
-           "(dim,) in m/s^2; Rayleigh damping alpha (1/s) and beta (s).")
+           py::arg("problem"), py::arg("integrator") = "quasi-newton", py::arg("gravity") = py::none(),
+           py::arg("damping_mass") = 0.0, py::arg("damping_stiffness") = 0.0,
+           "Simulator(problem, integrator='quasi-newton', gravity=None, damping_mass=0, damping_stiffness=0, "
+           "**settings): integrator one of quasi-newton (every model, at most qn_iterations L-BFGS iterations per "
+           "step), symplectic-euler, velocity-verlet, implicit-euler, implicit-euler-linearised, local-global "
+           "(springs only), quasi-static; masses from the model; gravity (dim,) in m/s^2; Rayleigh damping alpha "
+           "(1/s) and beta (s). settings: the integrator's options as `hooke simulate` takes them, dashes as "
+           "underscores: qn_iterations, qn_tolerance, qn_hessian, linear_solver, cg_tolerance, newton_tolerance, "
+           "newton_iterations, global_solve, iterations.")
       .def(
           "step",
           [](PySimulator& s, double dt) {

@@ -7,21 +7,11 @@
 #include <hooke/model/free_map.hpp>
 #include <hooke/model/mass.hpp>
 #include <hooke/model/problem.hpp>
+#include <hooke/model/support.hpp>
 #include <memory>
 
 namespace hooke::calibrate {
 namespace {
-
-// Nodes whose last coordinate is within `slab` of the lowest (slab = 0: the bottom face, 1e-6 of the diagonal).
-std::vector<int> held_nodes(const mesh::Mesh& m, double slab) {
-  const int up = m.dim() - 1;
-  const double bottom = m.nodes.col(up).minCoeff(), top = m.nodes.col(up).maxCoeff();
-  const double tol = slab > 0.0 ? slab * (top - bottom) : 1e-6 * mesh::bounding_box_diagonal(m);
-  std::vector<int> out;
-  for (int i = 0; i < m.node_count(); ++i)
-    if (m.nodes(i, up) <= bottom + tol) out.push_back(i);
-  return out;
-}
 
 // True when holding `nodes` removes every rigid motion: two distinct nodes in 2D, three not on a line in 3D. (A
 // factorisation does not detect the singular alternative reliably: roundoff leaves tiny positive pivots.)
@@ -225,8 +215,8 @@ StiffnessScale fit_self_weight_scale(const mesh::Mesh& mesh, const std::vector<m
   // Unit body force along each axis: nodal forces = the lumped volume (area x t in 2D) of each node.
   const VecX weight = model::lumped_masses(mesh, 1.0, materials.front().thickness);
 
-  for (double slab : {0.0, 0.05, 0.10, 0.20}) {
-    const std::vector<int> held = held_nodes(mesh, slab);
+  for (double slab : {model::kFace, 0.05, 0.10, 0.20}) {  // the bottom face, then ever wider slabs
+    const std::vector<int> held = model::end_nodes(mesh, mesh.dim() - 1, model::End::kLow, slab);
     if (!holds_rigidly(mesh, held)) continue;
     model::Problem held_body = model::make_problem(fem_model);
     model::fix_nodes(held_body, held);

@@ -235,26 +235,4 @@ Comparison compare_surface(const mesh::Mesh& surface, const material::Material& 
   return compare_calibrated(calibrate::calibrate_model(surface, material, mo), options, layers);
 }
 
-std::vector<calibrate::CertificateCase> certify(const calibrate::CalibratedModel& model, double strain, int layers,
-                                                const std::vector<model::LoadKind>& loads) {
-  if (!(strain > 0.0) || !std::isfinite(strain)) throw InvalidArgument("certify: the strain must be > 0");
-  if (loads.empty()) throw InvalidArgument("certify: no load case to certify");
-  CompareOptions o;
-  o.strain = strain;
-  // Certificates are taken at small strains (1 % by default), where Newton reaches the equilibrium from rest in one
-  // load step; a step that fails is halved as before, and the state is still checked for stability. Each
-  // factorisation is about 9 s on the Stanford bunny's 233 000 DOFs: the load cases share the FEM's (one linear
-  // solve per case) and the model's first one (the stability of the rest state, and modified Newton's start).
-  o.load_steps = 1;
-  std::vector<calibrate::CertificateCase> out;
-  const std::vector<Comparison> cases = compare_calibrated_cases(model, loads, o, layers);
-  for (size_t k = 0; k < loads.size(); ++k) {
-    const Comparison& c = cases[k];
-    solve::require_converged(c.fem_report);
-    solve::require_converged(c.spring_report);
-    out.push_back({std::string(model::load_kind_name(loads[k])), strain, c.max_error, c.mean_error, c.relative_l2});
-  }
-  return out;
-}
-
 }  // namespace hooke::experiments

@@ -81,14 +81,4 @@ std::vector<Comparison> compare_calibrated_cases(const calibrate::CalibratedMode
                                                  const std::vector<model::LoadKind>& kinds,
                                                  const CompareOptions& options, int layers = 4);
 
-/// The certificate a model is shipped with (`hooke calibrate --certify`): stretch, compress and shear (or the cases
-/// `loads` names, in its order) at mean linear-FEM strain `strain` against the linear FEM, each case's max / mean
-/// node error (m) and relative L2.
-/// @throws SolverFailure when a solve does not converge; InvalidArgument for strain <= 0 or no load
-std::vector<calibrate::CertificateCase> certify(const calibrate::CalibratedModel& model, double strain = 0.01,
-                                                int layers = 4,
-                                                const std::vector<model::LoadKind>& loads = {model::LoadKind::kStretch,
-                                                                                             model::LoadKind::kCompress,
-                                                                                             model::LoadKind::kShear});
-
 }  // namespace hooke::experiments

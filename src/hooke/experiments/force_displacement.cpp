@@ -1,6 +1,7 @@
 #include <cmath>
 #include <hooke/experiments/force_displacement.hpp>
 #include <hooke/fem/elastic_block.hpp>
+#include <hooke/model/support.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
 #include <limits>
 
@@ -11,14 +12,10 @@ struct Ends {
   std::vector<int> bottom, top;
 };
 
+// The bottom and top faces (model/support.hpp) along y.
 Ends ends(const mesh::Mesh& m) {
-  const double lo = m.nodes.col(1).minCoeff(), hi = m.nodes.col(1).maxCoeff(), tol = 1e-9 * (hi - lo);
-  Ends e;
-  for (int i = 0; i < m.node_count(); ++i) {
-    if (m.nodes(i, 1) <= lo + tol) e.bottom.push_back(i);
-    if (m.nodes(i, 1) >= hi - tol) e.top.push_back(i);
-  }
-  return e;
+  return {model::end_nodes(m, 1, model::End::kLow, model::kFace),
+          model::end_nodes(m, 1, model::End::kHigh, model::kFace)};
 }
 
 double mean_top_y(const mesh::Mesh& m, const Ends& e, const VecX& x) {

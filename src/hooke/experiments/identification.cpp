@@ -8,9 +8,9 @@
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/identify/positions_objective.hpp>
 #include <hooke/mesh/measure.hpp>
-#include <hooke/mesh/topology.hpp>
 #include <hooke/model/free_map.hpp>
 #include <hooke/model/mass.hpp>
+#include <hooke/model/support.hpp>
 #include <nlohmann/json.hpp>
 #include <random>
 
@@ -18,35 +18,7 @@ namespace hooke::experiments {
 namespace {
 
 constexpr const char* kAxes = "xyz";
-
-// Boundary facets with their outward unit normals, centroids and measures.
-struct Boundary {
-  RowMatXi facets;
-  RowMatX normals, centroids;
-  VecX measures;
-};
-
-Boundary boundary_of(const mesh::Mesh& mesh) {
-  Boundary b;
-  b.facets = mesh::boundary_facets(mesh);
-  b.measures = mesh::facet_measures(mesh, b.facets);
-  const int d = mesh.dim(), n = static_cast<int>(b.facets.rows());
-  b.normals.resize(n, d);
-  b.centroids = RowMatX::Zero(n, d);
-  for (int f = 0; f < n; ++f) {
-    for (int a = 0; a < b.facets.cols(); ++a) b.centroids.row(f) += mesh.nodes.row(b.facets(f, a));
-    b.centroids.row(f) /= static_cast<double>(b.facets.cols());
-    if (d == 3) {
-      const Vec3 p0 = mesh.nodes.row(b.facets(f, 0)), p1 = mesh.nodes.row(b.facets(f, 1)),
-                 p2 = mesh.nodes.row(b.facets(f, 2));
-      b.normals.row(f) = (p1 - p0).cross(p2 - p0).normalized();
-    } else {
-      const Vec2 e = mesh.nodes.row(b.facets(f, 1)) - mesh.nodes.row(b.facets(f, 0));
-      b.normals.row(f) = Vec2(e.y(), -e.x()).normalized();
-    }
-  }
-  return b;
-}
+constexpr double kEndQuarter = 0.25;  // the reference loads' supports and loaded facets: a quarter of the extent
 
 // The supported and loaded facets of one axis: outward normal within 60 degrees of -a (+a), centroid in the lowest
 // (highest) quarter of the extent along a.
@@ -57,35 +29,28 @@ struct AxisEnds {
   std::vector<int> loaded;  // facets
 };
 
-AxisEnds axis_ends(const mesh::Mesh& mesh, const Boundary& b, int axis) {
+AxisEnds axis_ends(const mesh::Mesh& mesh, const model::BoundaryFacets& b, int axis) {
   AxisEnds e;
   e.axis = axis;
-  const double low = mesh.nodes.col(axis).minCoeff(), high = mesh.nodes.col(axis).maxCoeff();
-  e.extent = high - low;
+  e.extent = mesh.nodes.col(axis).maxCoeff() - mesh.nodes.col(axis).minCoeff();
   const int d = mesh.dim();
   e.fixed_dofs.assign(static_cast<std::size_t>(d * mesh.node_count()), 0);
-  bool supported = false;
-  for (Eigen::Index f = 0; f < b.facets.rows(); ++f) {
-    const double n = b.normals(f, axis), c = b.centroids(f, axis);
-    if (n < -0.5 && c <= low + 0.25 * e.extent) {
-      supported = true;
-      for (int a = 0; a < b.facets.cols(); ++a)
-        for (int k = 0; k < d; ++k) e.fixed_dofs[static_cast<std::size_t>(d * b.facets(f, a) + k)] = 1;
-    } else if (n > 0.5 && c >= high - 0.25 * e.extent) {
-      e.loaded.push_back(static_cast<int>(f));
-    }
-  }
-  if (!supported || e.loaded.empty())
+  const std::vector<int> supports = model::facing_end_facets(mesh, b, axis, model::End::kLow, kEndQuarter);
+  for (int f : supports)
+    for (int a = 0; a < b.facets.cols(); ++a)
+      for (int k = 0; k < d; ++k) e.fixed_dofs[static_cast<std::size_t>(d * b.facets(f, a) + k)] = 1;
+  e.loaded = model::facing_end_facets(mesh, b, axis, model::End::kHigh, kEndQuarter);
+  if (supports.empty() || e.loaded.empty())
     throw InvalidArgument(std::string("reference loads: ") + mesh.source + " has no boundary facets facing the " +
-                          (supported ? "high" : "low") + " end of the " + kAxes[axis] + " axis");
+                          (supports.empty() ? "low" : "high") + " end of the " + kAxes[axis] + " axis");
   return e;
 }
 
 // Consistent nodal forces of a traction field t(centroid) (Pa) on the given facets: t x measure (x thickness in 2D)
 // shared equally by the facet's nodes.
 template <class Traction>
-VecX traction_forces(const mesh::Mesh& mesh, const Boundary& b, const std::vector<int>& facets, double thickness,
-                     Traction traction) {
+VecX traction_forces(const mesh::Mesh& mesh, const model::BoundaryFacets& b, const std::vector<int>& facets,
+                     double thickness, Traction traction) {
   const int d = mesh.dim();
   VecX f = VecX::Zero(d * mesh.node_count());
   const double scale = d == 2 ? thickness : 1.0;
@@ -105,8 +70,9 @@ struct PendingCase {
   bool held_out;
 };
 
-std::vector<PendingCase> pending_cases(const mesh::Mesh& mesh, const Boundary& b, const std::vector<AxisEnds>& ends,
-                                       const ReferenceLoads& loads, double thickness) {
+std::vector<PendingCase> pending_cases(const mesh::Mesh& mesh, const model::BoundaryFacets& b,
+                                       const std::vector<AxisEnds>& ends, const ReferenceLoads& loads,
+                                       double thickness) {
   const int d = mesh.dim();
   std::vector<PendingCase> out;
   for (const AxisEnds& e : ends) {
@@ -167,7 +133,7 @@ std::vector<identify::ReferenceCase> fem_reference_cases(const mesh::Mesh& mesh,
   if (!(loads.strain > 0.0) || !std::isfinite(loads.strain))
     throw InvalidArgument("reference loads: the strain must be positive");
   const int d = mesh.dim();
-  const Boundary b = boundary_of(mesh);
+  const model::BoundaryFacets b = model::boundary_facets_with_geometry(mesh);
   std::vector<AxisEnds> ends;
   for (int a = 0; a < d; ++a) ends.push_back(axis_ends(mesh, b, a));
   const std::vector<PendingCase> pending = pending_cases(mesh, b, ends, loads, material.thickness);

@@ -8,6 +8,7 @@
 #include <hooke/core/quantile.hpp>
 #include <hooke/interactive/physics_loop.hpp>
 #include <hooke/solve/dynamics_setup.hpp>
+#include <hooke/solve/simulator_settings.hpp>
 #include <nlohmann/json.hpp>
 
 namespace hooke::interactive {
@@ -94,11 +95,10 @@ void apply_setting(LiveSettings& s, const std::string& key, const std::string& v
     s.model.density = solve::setting_number(key, value);
   } else if (key == "method") {
     s.model.method = value;
-  } else if (key == "integrator") {
-    s.simulator.integrator = solve::integrator_from_name(value);
   } else if (key == "haptic-stiffness") {
     s.haptic_stiffness = haptic_stiffness_from_name(value);
-  } else if (!solve::set_dynamics_field(s.dynamics, key, value)) {
+  } else if (!solve::set_dynamics_field(s.dynamics, key, value) &&
+             !solve::set_simulator_field(s.simulator, key, value)) {
     throw InvalidArgument("unknown setting '" + key + "'");
   }
 }

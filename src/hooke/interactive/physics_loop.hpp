@@ -152,8 +152,9 @@ class PhysicsLoop {
   double m_drag_t0 = 0.0, m_drag_t1 = -1.0;
 };
 
-/// Carries out one `set` script command on settings (young, poisson, density, method, integrator, haptic-stiffness,
-/// and the dynamics fields: dt, gravity, damping-mass, damping-stiffness, influence-radius; solve::dynamics_fields).
+/// Carries out one `set` script command on settings (young, poisson, density, method, haptic-stiffness, the dynamics
+/// fields: dt, gravity, damping-mass, ...; solve::dynamics_fields, and the integrator's: integrator, qn-iterations,
+/// cg-tolerance, ...; solve::simulator_fields).
 /// @throws InvalidArgument for a value that does not parse or is out of range
 void apply_setting(LiveSettings& settings, const std::string& key, const std::string& value);
 

@@ -2,8 +2,8 @@
 #include <cmath>
 #include <fstream>
 #include <hooke/core/error.hpp>
+#include <hooke/interactive/physics_loop.hpp>
 #include <hooke/interactive/script.hpp>
-#include <hooke/solve/dynamics_setup.hpp>
 #include <sstream>
 
 namespace hooke::interactive {
@@ -41,9 +41,6 @@ struct LineParser {
     if (next < words.size()) fail("unexpected '" + words[next] + "'");
   }
 };
-
-// Besides solve::dynamics_fields() (dt, gravity, damping-mass, damping-stiffness, influence-radius).
-const char* const kSetKeys[] = {"young", "poisson", "density", "method", "integrator"};
 
 }  // namespace
 
@@ -97,11 +94,13 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     } else if (verb == "set") {
       c.action = ScriptAction::kSet;
       c.key = p.word("setting");
-      bool known = false;
-      for (const char* k : kSetKeys) known = known || c.key == k;
-      for (const solve::DynamicsField& f : solve::dynamics_fields()) known = known || c.key == f.name;
-      if (!known) p.fail("unknown setting '" + c.key + "'");
       c.value = p.word("value");
+      try {  // the name and the value's form now, with the line; ranges when the physics applies it
+        LiveSettings scratch;
+        apply_setting(scratch, c.key, c.value);
+      } catch (const InvalidArgument& e) {
+        p.fail(e.what());
+      }
     } else if (verb == "colormap") {
       c.action = ScriptAction::kColormap;
       c.key = p.word("colour map");

@@ -4,6 +4,7 @@
 #include <hooke/mesh/measure.hpp>
 #include <hooke/mesh/topology.hpp>
 #include <hooke/model/load_case.hpp>
+#include <hooke/model/support.hpp>
 
 namespace hooke::model {
 
@@ -27,29 +28,17 @@ LoadCase make_load_case(const mesh::Mesh& mesh, LoadKind kind, double traction_p
     case LoadKind::kCompress: lc.direction(up) = -1.0; break;
     case LoadKind::kShear: lc.direction(d == 2 ? 0 : 1) = 1.0; break;
   }
-  const double top = mesh.nodes.col(up).maxCoeff(), bottom = mesh.nodes.col(up).minCoeff();
   const RowMatXi facets = mesh::boundary_facets(mesh);
   const VecX measure = mesh::facet_measures(mesh, facets);
-  lc.height = top - bottom;
-  double tol = 1e-6 * mesh::bounding_box_diagonal(mesh);
-  bool flat_top = false;
-  for (Eigen::Index f = 0; f < facets.rows() && !flat_top; ++f) {
-    bool on_top = true;
-    for (Eigen::Index k = 0; k < facets.cols(); ++k) on_top = on_top && mesh.nodes(facets(f, k), up) >= top - tol;
-    flat_top = on_top;
-  }
-  if (!flat_top) tol = kEndBand * lc.height;  // a curved body: its end bands
-  for (int i = 0; i < mesh.node_count(); ++i) {
-    if (mesh.nodes(i, up) <= bottom + tol) lc.fixed_nodes.push_back(i);
-    if (mesh.nodes(i, up) >= top - tol) lc.top_nodes.push_back(i);
-  }
+  lc.height = mesh.nodes.col(up).maxCoeff() - mesh.nodes.col(up).minCoeff();
+  // The papers' faces, or for a curved body (no boundary facet wholly on the top face) its end bands.
+  std::vector<int> loaded = end_facets(mesh, facets, up, End::kHigh, kFace);
+  const double band = loaded.empty() ? kEndBand : kFace;
+  if (band != kFace) loaded = end_facets(mesh, facets, up, End::kHigh, band);
+  lc.fixed_nodes = end_nodes(mesh, up, End::kLow, band);
+  lc.top_nodes = end_nodes(mesh, up, End::kHigh, band);
   lc.nodal_forces = VecX::Zero(d * mesh.node_count());
-  int loaded = 0;
-  for (Eigen::Index f = 0; f < facets.rows(); ++f) {
-    bool on_top = true;
-    for (Eigen::Index k = 0; k < facets.cols(); ++k) on_top = on_top && mesh.nodes(facets(f, k), up) >= top - tol;
-    if (!on_top) continue;
-    ++loaded;
+  for (int f : loaded) {
     const double area = measure(f) * (d == 2 ? thickness : 1.0);
     lc.top_area += area;
     const double share = traction_pa * area / static_cast<double>(facets.cols());
@@ -57,7 +46,7 @@ LoadCase make_load_case(const mesh::Mesh& mesh, LoadKind kind, double traction_p
       for (int c = 0; c < d; ++c) lc.nodal_forces(d * facets(f, k) + c) += share * lc.direction(c);
   }
   const std::string where = mesh.source.empty() ? std::string("the mesh") : mesh.source;
-  if (loaded == 0) throw InvalidArgument(where + " has no flat top boundary to load");
+  if (loaded.empty()) throw InvalidArgument(where + " has no flat top boundary to load");
   if (lc.fixed_nodes.empty()) throw InvalidArgument(where + " has no bottom boundary to clamp");
   return lc;
 }

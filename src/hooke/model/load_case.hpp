@@ -29,17 +29,15 @@ struct LoadCase {
   double top_area = 0.0;         ///< loaded reference area, m^2 (edge length x thickness in 2D)
 };
 
-/// Finds the top and bottom boundaries (nodes within 1e-6 of the bounding-box diagonal from max / min of
-/// the vertical coordinate) and the consistent nodal forces of a uniform traction on the top facets
+/// Finds the top and bottom boundaries (model/support.hpp's faces: nodes within 1e-6 of the bounding-box diagonal
+/// from max / min of the vertical coordinate) and the consistent nodal forces of a uniform traction on the top facets
 /// (each node of a linear facet receives traction x facet area / facet node count). A body with no flat top (a
-/// scanned organ or bone) is held and loaded at its ends instead: the nodes in the lowest kEndBand of its height are
-/// fixed and the boundary facets wholly in the highest kEndBand carry the traction.
+/// scanned organ or bone) is held and loaded at its ends instead: the nodes in the lowest kEndBand (model/support.hpp)
+/// of its height are fixed and the boundary facets wholly in the highest kEndBand carry the traction.
 /// @param mesh       validated triangle, quad or tet mesh, m
 /// @param thickness  plate thickness in 2D, m (ignored in 3D)
 /// @throws InvalidArgument if no top facet or no bottom node is found, or traction is not finite
 LoadCase make_load_case(const mesh::Mesh& mesh, LoadKind kind, double traction_pa, double thickness = 1.0);
-/// The fraction of the height held and loaded at each end of a body with no flat top (make_load_case).
-inline constexpr double kEndBand = 0.05;
 
 /// Applies a load case to a problem on the same mesh: clamps the fixed nodes and sets the forces.
 void apply(const LoadCase& load, Problem& problem);
