@@ -2,9 +2,11 @@
 // carry theirs; a model whose method hooke does not know (identified, hand-tuned) is a "file" model.
 #include <gtest/gtest.h>
 
+#include <hooke/calibrate/method.hpp>
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/mesh/generators.hpp>
+#include <set>
 
 namespace hooke::calibrate {
 namespace {
@@ -53,6 +55,21 @@ TEST(ModelKind, NamesMapToKindsAndUnknownNamesAreRefused) {
     EXPECT_NE(what.find("any-nu-tet"), std::string::npos) << what;
     EXPECT_NE(what.find("file"), std::string::npos) << what;
   }
+}
+
+// Every name the factory takes states its equation, from one table for the calibration methods; the equations
+// differ from method to method, and an unknown name is refused.
+TEST(MethodEquation, EveryFactoryNameHasItsOwn) {
+  std::set<std::string> seen;
+  for (const std::string& name : model_method_names()) {
+    const std::string eq = method_equation(name);
+    EXPECT_FALSE(eq.empty()) << name;
+    EXPECT_TRUE(seen.insert(eq).second) << name << " repeats " << eq;
+  }
+  for (const std::string_view name : method_names())
+    EXPECT_EQ(method_equation(std::string(name)), method_equation(method_from_name(name)));
+  EXPECT_NE(method_equation("lloyd-tet").find("Eq. 12"), std::string::npos);
+  EXPECT_THROW(method_equation("lloyd"), InvalidArgument);
 }
 
 }  // namespace

@@ -28,6 +28,8 @@ Method method_from_name(std::string_view name);  ///< @throws InvalidArgument li
 std::string_view method_name(Method method);
 /// Every calibration method's name, in the order of Method.
 std::vector<std::string_view> method_names();
+/// The paper and equation `method` implements, one line (hooke calibrate's report, the model file's "equation").
+std::string_view method_equation(Method method);
 
 /// Where `method` leaves the assumptions of its derivation on this mesh and material, one sentence each
 /// (empty when it is applied where it is exact): lloyd-equilateral needs equilateral triangles and nu = 1/3

@@ -51,26 +51,6 @@ std::vector<std::string> model_method_names() {
 }
 
 std::string method_equation(std::string_view method) {
-  if (method == "vangelder") return "van Gelder 1998: k = sum_e E t A_e / l^2 (tets: E V_e / l^2)";
-  if (method == "lloyd-equilateral") return "Lloyd et al. 2007, Eq. 8: k = sum_e sqrt(3)/4 E t";
-  if (method == "lloyd-triangle") return "Lloyd et al. 2007, Eq. 9: k = sum_e sqrt(3)/4 E t A_e / A_0";
-  if (method == "lloyd-square") return "Lloyd et al. 2007, Eq. 10-11: edge 5/16 E t, diagonal 7/16 E t, prestrained";
-  if (method == "lloyd-tet") return "Lloyd et al. 2007, Eq. 12 with the equivalent edge length of Eq. 13";
-  if (method == "lloyd-tet-volume") return "Lloyd et al. 2007, Eq. 14 with the equivalent edge length of Eq. 13";
-  if (method == "stiffness-fit")
-    return "Lloyd et al. 2007, Sec. 3.3 numerically: per element min ||K_FEM - K_MSM||_F, k >= 0 (tets: K_FEM at "
-           "E, nu = 1/4, what springs can carry), then all k times one c fitted by Eq. 1 to the linear FEM under "
-           "self-weight";
-  if (method == "stiffness-fit-volume")
-    return "hooke's any-nu fit: per tet min ||K_FEM(5 mu/2, 1/4) - K_MSM||_F, k >= 0, and a volume term "
-           "k_V = (lambda - mu) V0 for nu >= 1/4 (App. C.2); the springs times one c fitted by Eq. 1 to the "
-           "linear FEM under self-weight";
-  if (method == "any-nu-tet")
-    return "hooke's any-nu split: Lloyd et al. 2007 Eq. 12-13 springs at E_s = 5 mu / 2 and a volume term "
-           "k_V = (lambda - mu) V0 per tet (App. C.2) for nu >= 1/4; below, Eq. 12-13 at E (lloyd-tet)";
-  if (method == "any-nu-triangle")
-    return "hooke's any-nu split: Lloyd et al. 2007 Eq. 9 springs at E_s = 8 mu / 3 and an area term "
-           "k_A = (lambda* - mu) t A0 per triangle for lambda* >= mu (nu >= 1/3 in plane stress); below, Eq. 9 at E";
   if (method == "auto") return "the method of smallest measured error for the mesh's element kind and nu";
   switch (model_kind_of_method(method)) {  // throws for an unknown name, listing the names
     case ModelKind::kSurface:
@@ -79,8 +59,7 @@ std::string method_equation(std::string_view method) {
     case ModelKind::kSprings:
     case ModelKind::kFile: break;
   }
-  method_from_name(method);  // throws, listing the calibration methods
-  return {};
+  return std::string(calibrate::method_equation(method_from_name(method)));  // throws, listing the methods
 }
 
 CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material& material,
