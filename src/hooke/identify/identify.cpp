@@ -130,24 +130,19 @@ double relative_force_residual(const ParameterLayout& layout, const VecX& theta,
   return scale > 0.0 ? (r - b).norm() / scale : (r - b).norm();
 }
 
-// Eq. 1 by spectral projected gradients (Birgin, Martinez & Raydan 2000) in variables relative to the start, with a
-// non-monotone Armijo search over the last 5 values.
-VecX fit_positions(const mesh::Mesh& mesh, const ParameterLayout& layout, const std::vector<ReferenceCase>& cases,
-                   const VecX& start, const IdentifyOptions& options, IdentifyReport& report) {
-  std::vector<ReferenceCase> training;
-  for (const ReferenceCase* c : training_cases(cases)) training.push_back(*c);
-  PositionsObjective objective(mesh, layout, training, options.statics);
-  // the start: the Eq. 2 fit or start_model, whichever has the smaller G; springs kept at or above the floor
+// Eq. 1's start: the Eq. 2 fit `start` or options.start_model, whichever has the smaller G, within the bounds and
+// with the springs at or above `floor`; g and gradient are G and its gradient there.
+VecX positions_start(PositionsObjective& objective, const ParameterLayout& layout, const VecX& start, double floor,
+                     const IdentifyOptions& options, IdentifyReport& report, double& g, VecX& gradient) {
   const int ns = layout.spring_count();
-  const double floor = options.stiffness_floor * start.head(ns).mean();
   const VecX lower = layout.lower_bounds();
   const auto within_bounds = [&](VecX theta) {
     theta = theta.cwiseMax(lower);
     theta.head(ns) = theta.head(ns).cwiseMax(floor);
     return theta;
   };
-  VecX theta = within_bounds(start), gradient;
-  double g = objective.value(theta, &gradient);
+  VecX theta = within_bounds(start);
+  g = objective.value(theta, &gradient);
   report.eq2_positions_objective = g;
   if (options.start_model) {
     const VecX theta_model = within_bounds(parameters_of(layout, *options.start_model));
@@ -162,10 +157,15 @@ VecX fit_positions(const mesh::Mesh& mesh, const ParameterLayout& layout, const 
     }
   }
   if (!std::isfinite(g)) throw SolverFailure("identification: the start has no stable equilibrium on a training case");
-  // scaled variables theta = s .* z, s = |start| (the group's mean magnitude where it is 0), so that |z| ~ 1. Where
-  // every k_V is 0 the scale is 0.1 x the springs' mean k L^2, a tenth of the strain energy a spring carries
-  // ((tr eps)^2 k_V/2 against (eps_s L)^2 k/2). On cylinder_hole at nu = 0 with negative volume terms, G after 15
-  // iterations was 0.0201 with 1, 0.0106 with 0.1, 0.0111 with 0.01 (the terms barely move) and with them frozen.
+  return theta;
+}
+
+// Eq. 1's variable scale s (theta = s .* z), s = |theta| (the group's mean magnitude where it is 0), so that |z| ~ 1.
+// Where every k_V is 0 the scale is 0.1 x the springs' mean k L^2, a tenth of the strain energy a spring carries
+// ((tr eps)^2 k_V/2 against (eps_s L)^2 k/2). On cylinder_hole at nu = 0 with negative volume terms, G after 15
+// iterations was 0.0201 with 1, 0.0106 with 0.1, 0.0111 with 0.01 (the terms barely move) and with them frozen.
+VecX positions_scale(const ParameterLayout& layout, const VecX& theta) {
+  const int ns = layout.spring_count();
   VecX s = theta.cwiseAbs();
   double volume_scale = s.size() > ns ? s.tail(s.size() - ns).mean() : 1.0;
   if (!(volume_scale > 0.0) && ns > 0)
@@ -173,7 +173,23 @@ VecX fit_positions(const mesh::Mesh& mesh, const ParameterLayout& layout, const 
   volume_scale = std::max(volume_scale, 1e-30);
   for (Eigen::Index j = 0; j < s.size(); ++j)
     if (!(s(j) > 0.0)) s(j) = j < ns ? s.head(ns).mean() : volume_scale;
-  VecX z_lower = lower.cwiseQuotient(s);  // 0 or -infinity
+  return s;
+}
+
+// Eq. 1 by spectral projected gradients (Birgin, Martinez & Raydan 2000) in the scaled variables, with a
+// non-monotone Armijo search over the last 5 values.
+VecX fit_positions(const mesh::Mesh& mesh, const ParameterLayout& layout, const std::vector<ReferenceCase>& cases,
+                   const VecX& start, const IdentifyOptions& options, IdentifyReport& report) {
+  std::vector<ReferenceCase> training;
+  for (const ReferenceCase* c : training_cases(cases)) training.push_back(*c);
+  PositionsObjective objective(mesh, layout, training, options.statics);
+  const int ns = layout.spring_count();
+  const double floor = options.stiffness_floor * start.head(ns).mean();
+  double g = 0.0;
+  VecX gradient;
+  const VecX theta = positions_start(objective, layout, start, floor, options, report, g, gradient);
+  const VecX s = positions_scale(layout, theta);
+  VecX z_lower = layout.lower_bounds().cwiseQuotient(s);  // 0 or -infinity
   z_lower.head(ns) = floor * s.head(ns).cwiseInverse();
   VecX z = theta.cwiseQuotient(s), gz = gradient.cwiseProduct(s);
   report.position_history.push_back(g);
