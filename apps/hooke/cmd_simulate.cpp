@@ -47,7 +47,7 @@ void print_summary(const SimulateCli& o, const calibrate::CalibratedModel& model
 
 int run_simulate(SimulateCli o) {
   const calibrate::CalibratedModel model = load_model(o.in);
-  apply_integrator_names(o.integrator, o.run.simulator);
+  apply_integrator_options(o.integrator, o.run.simulator);
   o.run.clamp_bottom = !o.free_body;
   o.run.reorder = !o.no_reorder;
   o.run.probe_offset = as_vector(o.probe_offset);

@@ -72,7 +72,7 @@ struct IntegratorInput {
 /// --cg-tolerance, ...), the defaults shown being `options`' values; the text given lands in `in`.
 void add_integrator_options(CLI::App* cmd, IntegratorInput& in, const solve::SimulatorOptions& options);
 /// Sets the fields given in `in` on `options`. @throws InvalidArgument for an unknown name or a malformed number
-void apply_integrator_names(const IntegratorInput& in, solve::SimulatorOptions& options);
+void apply_integrator_options(const IntegratorInput& in, solve::SimulatorOptions& options);
 
 /// Registers every solve::dynamics_fields() entry as --NAME on `cmd` (--dt, --gravity, --damping-mass, ...), bound
 /// to `setup` (whose values are the defaults shown), as `simulate` and `view` take them.

@@ -188,7 +188,7 @@ void add_integrator_options(CLI::App* cmd, IntegratorInput& in, const solve::Sim
         ->default_str(fields[k].get(options));
 }
 
-void apply_integrator_names(const IntegratorInput& in, solve::SimulatorOptions& options) {
+void apply_integrator_options(const IntegratorInput& in, solve::SimulatorOptions& options) {
   const std::span<const solve::SimulatorField> fields = solve::simulator_fields();
   for (size_t k = 0; k < in.values.size() && k < fields.size(); ++k)
     if (!in.values[k].empty()) fields[k].set(options, in.values[k]);

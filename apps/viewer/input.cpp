@@ -3,6 +3,9 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace hooke::viewer {
 namespace {
 double g_scroll = 0.0;  // wheel steps since the last frame

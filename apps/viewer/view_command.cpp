@@ -38,7 +38,7 @@ int run_view(ViewCli o) {
   if (calibrate::model_kind(v.model) == calibrate::ModelKind::kSurface)
     v.settings.model.surface = cli::surface_options(o.in.surface);
   v.settings.simulator = o.settings.simulator;
-  cli::apply_integrator_names(o.integrator, v.settings.simulator);
+  cli::apply_integrator_options(o.integrator, v.settings.simulator);
   v.settings.dynamics = o.settings.dynamics;
   interactive::LiveSimulation check(v.model, v.settings);  // a model the integrator cannot run fails here
   (void)check;

@@ -11,7 +11,6 @@
 #include <hooke/interactive/fields.hpp>
 #include <hooke/interactive/guarded.hpp>
 #include <hooke/interactive/haptic_loop.hpp>
-#include <hooke/interactive/latest_job.hpp>
 #include <hooke/interactive/physics_loop.hpp>
 #include <hooke/interactive/picking.hpp>
 #include <hooke/io/series.hpp>
