@@ -26,10 +26,12 @@ struct BenchCli {
   std::string out_dir;
   bool haptics = false;
   std::string haptic_stiffness = "secant";
+  bool haptic_curvature = true;
   double deformation_dt = 0.0;
   double reference_budget = 900.0;
   double ramp = 1.0, hold = 0.3;
   std::string qn_hessian = "rest";
+  double qn_tolerance = interactive::kDeformationTolerance;
 };
 
 // The multirate haptics benchmark on the same sizes, with the first method and the same nu and drag.
@@ -40,10 +42,12 @@ int run_haptics(const BenchCli& o, const std::vector<int>& sizes) {
   h.poisson = o.options.poisson;
   h.drag = o.options.drag;
   h.stiffness = interactive::haptic_stiffness_from_name(o.haptic_stiffness);
+  h.curvature = o.haptic_curvature;
   h.deformation_dt = o.deformation_dt;
   h.reference_budget = o.reference_budget;
   h.ramp = o.ramp;
   h.simulator.quasi_newton.initial_hessian = solve::quasi_newton_hessian_from_name(o.qn_hessian);
+  h.simulator.quasi_newton.tolerance = o.qn_tolerance;
   h.hold = o.hold;
   const interactive::HapticsBenchmarkReport report = interactive::run_haptics_benchmark(h);
   const std::string markdown = interactive::haptics_benchmark_markdown(h, report);
@@ -131,11 +135,18 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--haptic-stiffness", o->haptic_stiffness,
                   "--haptics: the local model's stiffness: secant, condensed or none")
       ->capture_default_str();
+  cmd->add_flag("--haptic-curvature,!--no-haptic-curvature", o->haptic_curvature,
+                "--haptics: the local model's second-order term (the condensed energy's third derivative at the "
+                "grab), or a model linear in the offset")
+      ->capture_default_str();
   cmd->add_option("--deformation-dt", o->deformation_dt,
                   "--haptics: the deformation's step, s (0: measured, 1.25 x a step's wall time)")
       ->capture_default_str();
   cmd->add_option("--qn-hessian", o->qn_hessian,
                   "--haptics: the deformation's quasi-newton initial Hessian, rest or isotropic")
+      ->capture_default_str();
+  cmd->add_option("--qn-tolerance", o->qn_tolerance,
+                  "--haptics: the deformation's (and the reference's) quasi-newton tolerance, in (0, 1)")
       ->capture_default_str();
   cmd->add_option("--ramp", o->ramp, "--haptics: the drag's smoothstep ramp, s")->capture_default_str();
   cmd->add_option("--hold", o->hold, "--haptics: the time it is held after the ramp, s")->capture_default_str();

@@ -38,6 +38,8 @@ int run_view(ViewCli o) {
   if (calibrate::model_kind(v.model) == calibrate::ModelKind::kSurface)
     v.settings.model.surface = cli::surface_options(o.in.surface);
   v.settings.simulator = o.settings.simulator;
+  // Multirate: the haptic loop renders from each deformation step's probe force, so it is converged further.
+  if (v.haptic_rate > 0.0) v.settings.simulator.quasi_newton.tolerance = interactive::kDeformationTolerance;
   cli::apply_integrator_options(o.integrator, v.settings.simulator);
   v.settings.dynamics = o.settings.dynamics;
   interactive::LiveSimulation check(v.model, v.settings);  // a model the integrator cannot run fails here
@@ -51,6 +53,7 @@ int run_view(ViewCli o) {
   v.height = o.size[1];
   v.realtime = !o.fast;
   v.settings.haptic_stiffness = interactive::haptic_stiffness_from_name(o.haptic_stiffness_name);
+  v.settings.haptic_curvature = o.settings.haptic_curvature;
   if (!(v.haptic_rate >= 0.0) || !std::isfinite(v.haptic_rate)) throw InvalidArgument("--haptic-rate must be >= 0 Hz");
   if (v.threads < 1) throw InvalidArgument("--threads must be >= 1");
   if (v.grab_radius < 0.0) throw InvalidArgument("--grab-radius must be >= 0 m");
@@ -81,9 +84,15 @@ std::function<int()> add_view_options(CLI::App* cmd) {
                 "The scene alone: no panel, force arrow or colour bar (e.g. for pixel tests)");
   cmd->add_option("--threads", o->run.threads, "OpenMP threads of the physics thread")->capture_default_str();
   cmd->add_flag("--fast", o->fast, "Step as fast as possible instead of one step per dt of wall time");
-  cmd->add_option("--haptic-rate", o->run.haptic_rate,
-                  "Multirate haptics: a haptic loop at this rate (Hz, e.g. 1000) renders the probe force from the "
-                  "deformation's local model, which steps at --dt; the mouse drives the haptic loop (0: off)")
+  cmd->add_option(
+         "--haptic-rate", o->run.haptic_rate,
+         "Multirate haptics: a haptic loop at this rate (Hz, e.g. 1000) renders the probe force from the "
+         "deformation's local model, which steps at --dt (at --qn-tolerance 1e-3 unless given); the mouse drives the "
+         "haptic loop (0: off)")
+      ->capture_default_str();
+  cmd->add_flag("--haptic-curvature,!--no-haptic-curvature", o->settings.haptic_curvature,
+                "The haptic local model's second-order term (the condensed energy's third derivative at the grab), "
+                "or a model linear in the offset")
       ->capture_default_str();
   cmd->add_option("--haptic-stiffness", o->haptic_stiffness_name,
                   "The haptic local model's stiffness: secant (updated by every deformation step), condensed (the "

@@ -115,5 +115,17 @@ def test_haptic_model_renders_between_steps():
     assert k.shape == (3, 3) and k[0, 0] > 0.0 and np.allclose(k, k.T)
     pushed = np.asarray(h.render([1.1e-3, 0.0, 0.0]))
     assert pushed[0] < h.force[0]  # pushing further: the body pushes back harder (force along -x grows)
+    # The second-order term: render = force - K d - T(d, d) / 2, and without it (haptic_curvature off) linear.
+    t = np.asarray(h.curvature)
+    assert t.shape == (3, 9) and np.abs(t).max() > 0.0
+    d = np.array([1e-4, 0.0, 0.0])
+    expected = np.asarray(h.force) - k @ d - 0.5 * np.array([d @ t[c].reshape(3, 3) @ d for c in range(3)])
+    assert np.allclose(h.render(np.asarray(h.offset) + d), expected, rtol=0, atol=1e-12)
+    sim.apply(haptic_curvature=False)
+    sim.grab([node])
+    sim.step()
+    assert np.asarray(sim.haptic_model().curvature).size == 0
+    with pytest.raises(hooke.InvalidArgument, match="haptic-curvature"):
+        sim.apply(haptic_curvature="maybe")
     with pytest.raises(hooke.InvalidArgument, match="haptic stiffness"):
         sim.apply(haptic_stiffness="springy")

@@ -16,26 +16,38 @@
 namespace hooke::interactive {
 namespace {
 
-LiveSimulation grabbed(const mesh::Mesh& m, double dt, HapticStiffness k = HapticStiffness::kSecant) {
+LiveSimulation grabbed(const mesh::Mesh& m, double dt, HapticStiffness k = HapticStiffness::kSecant,
+                       bool curvature = true) {
   LiveSettings s = settings("any-nu-tet", 0.45);
   s.dynamics.damping_mass = 20.0;
   s.dynamics.dt = dt;
   s.haptic_stiffness = k;
+  s.haptic_curvature = curvature;
+  s.simulator.quasi_newton.tolerance = kDeformationTolerance;
   LiveSimulation sim(m, s);
   sim.grab({top_node(m)});
   return sim;
 }
 
+// The tests' drag (2 mm along x over 0.5 s, 0.7 s in all) and its full-rate reference at 1 kHz.
+struct Drag {
+  mesh::Mesh m = cylinder();
+  DeviceDrag device{Vec3(1.0, 0.0, 0.0), 2e-3, 0.5};
+  double duration = 0.7;
+  ForceTrace reference;
+  Drag() {
+    LiveSimulation full = grabbed(m, 1e-3);
+    reference = full_rate_force(full, device, duration);
+  }
+};
+
 TEST(Multirate, ForceWithinFivePercentOfTheFullRateDrag) {
-  const mesh::Mesh m = cylinder();
-  const DeviceDrag device{Vec3(1.0, 0.0, 0.0), 2e-3, 0.5};
-  const double duration = 0.7;
-  LiveSimulation full = grabbed(m, 1e-3);
-  const ForceTrace reference = full_rate_force(full, device, duration);
+  const Drag drag;
+  const auto& [m, device, duration, reference] = drag;
   for (const double deformation_dt : {0.01, 0.03}) {
     double errors[3] = {0.0, 0.0, 0.0};
     for (const HapticStiffness k : {HapticStiffness::kNone, HapticStiffness::kCondensed, HapticStiffness::kSecant}) {
-      LiveSimulation sim = grabbed(m, deformation_dt, k);
+      LiveSimulation sim = grabbed(m, deformation_dt, k, false);  // the linear models (curved: the next test)
       const ForceTrace haptic = multirate_force(sim, device, duration, 1e-3);
       ASSERT_EQ(haptic.time.size(), reference.time.size());
       errors[static_cast<int>(k)] = relative_force_error(haptic, reference);
@@ -55,6 +67,53 @@ TEST(Multirate, ForceWithinFivePercentOfTheFullRateDrag) {
   }
   LiveSimulation sim = grabbed(m, 0.0025);
   EXPECT_THROW(multirate_force(sim, device, duration, 1e-3), InvalidArgument);  // not a whole multiple
+}
+
+// A deformation step as long as half the drag: the linear local model misses the body's stiffening over the
+// offsets it extrapolates to, the curved one (the condensed energy's third derivative at the grab) follows it.
+TEST(Multirate, TheCurvatureCarriesTheForceOverLongDeformationSteps) {
+  const Drag drag;
+  const auto& [m, device, duration, reference] = drag;
+  for (const double deformation_dt : {0.1, 0.25}) {
+    double errors[2][2];  // [curvature][secant]
+    for (const bool curvature : {false, true})
+      for (const HapticStiffness k : {HapticStiffness::kCondensed, HapticStiffness::kSecant}) {
+        LiveSimulation sim = grabbed(m, deformation_dt, k, curvature);
+        errors[curvature][k == HapticStiffness::kSecant] =
+            relative_force_error(multirate_force(sim, device, duration, 1e-3), reference);
+      }
+    std::cout << "[multirate] deformation every " << 1e3 * deformation_dt << " ms: force error linear / curved, "
+              << "condensed " << errors[0][0] << " / " << errors[1][0] << ", secant " << errors[0][1] << " / "
+              << errors[1][1] << "\n";
+    for (const int secant : {0, 1}) {
+      EXPECT_LT(errors[1][secant], 0.05);
+      EXPECT_LT(errors[1][secant], 0.7 * errors[0][secant]);
+    }
+  }
+}
+
+// The curved model's render: f0 - K d - T(d, d) / 2, written out term by term.
+TEST(HapticModel, RendersTheSecondOrderTerm) {
+  HapticModel h;
+  h.grabbed = true;
+  h.offset = Vec3(1e-3, 0.0, -2e-3);
+  h.force = Vec3(0.1, -0.2, 0.3);
+  h.stiffness = (MatX(3, 3) << 30, 1, 2, 1, 20, 3, 2, 3, 25).finished();
+  h.curvature = MatX::Zero(3, 9);
+  for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < 3; ++a)
+      for (int b = a; b < 3; ++b) h.curvature(c, 3 * a + b) = h.curvature(c, 3 * b + a) = 100.0 * (c + 1) + 10 * a + b;
+  const Vec3 u(4e-3, 1e-3, 2e-3), d = u - Vec3(h.offset);
+  Vec3 expected = Vec3(h.force) - h.stiffness * d;
+  for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) expected(c) -= 0.5 * h.curvature(c, 3 * a + b) * d(a) * d(b);
+  EXPECT_LT((h.render(u) - expected).norm(), 1e-15);
+  const MatX shift = curvature_along(h.curvature, d);
+  for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < 3; ++a) EXPECT_DOUBLE_EQ(shift(c, a), h.curvature.row(c).segment(3 * a, 3).dot(d));
+  h.curvature.resize(0, 0);  // linear
+  EXPECT_LT((h.render(u) - (Vec3(h.force) - h.stiffness * d)).norm(), 1e-15);
 }
 
 // At the grab, before any step has given the secant a pair, it is the condensed stiffness.

@@ -116,6 +116,63 @@ TEST(ContactStiffness, ASmallerRegionIsStifferAndConvergesWithItsSize) {
   }
 }
 
+// The holding force (sum over the held nodes of dE/dx, N) at the nonlinear static equilibrium with every held node
+// moved by `offset` from rest.
+Vec3 nonlinear_holding_force(const Body& b, const std::vector<int>& held, const Vec3& offset) {
+  model::Problem p = model::make_problem(b.built.model);
+  model::fix_nodes(p, b.clamped);
+  model::fix_nodes(p, held);
+  p.prescribed_positions = b.built.model->rest_positions();
+  for (const int i : held) p.prescribed_positions.segment<3>(3 * i) += offset;
+  StaticOptions o;
+  o.newton.tolerance = 1e-12;
+  o.check_stability = false;
+  const StaticResult r = static_equilibrium(p, o);
+  EXPECT_EQ(r.report.status, SolveStatus::kConverged) << r.report.message;
+  const VecX g = b.built.model->gradient(r.positions);
+  Vec3 f = Vec3::Zero();
+  for (const int i : held) f += g.segment<3>(3 * i);
+  return f;
+}
+
+// The curvature against the nonlinear equilibria it summarises: the holding force's second difference over the
+// probe's offset, F(d p) + F(-d p) - F(d q) - F(-d q) = 4 d^2 T(., a, b) + O(d^4) with p = e_a + e_b, q = e_a - e_b
+// (the envelope argument behind contact_curvature is what this checks: it never solves an equilibrium). A linear
+// FEM model's energy is quadratic, so its curvature is zero.
+TEST(ContactCurvature, IsTheSecondDifferenceOfNonlinearHoldingForces) {
+  const Body b = body("any-nu-tet", 6, 4);
+  const VecX& x = b.built.model->rest_positions();
+  const std::vector<int> held = top_nodes(b.model.mesh, 0.004);
+  const ContactResponse r = contact_response(b.k, b.fixed, x, 3, held);
+  EXPECT_LT((r.stiffness - contact_stiffness(b.k, b.fixed, x, 3, held)).norm(), 1e-14 * r.stiffness.norm());
+  for (const int i : held) EXPECT_EQ(r.modes.row(3 * i), Eigen::RowVector3d(1, 0, 0));
+  for (const int i : b.clamped) EXPECT_EQ(r.modes.row(3 * i).norm(), 0.0);
+  const MatX t = contact_curvature(*b.built.model, x, r.modes, 1e-6);
+  ASSERT_EQ(t.rows(), 3);
+  ASSERT_EQ(t.cols(), 9);
+  const double d = 5e-5;
+  for (const auto& [a, c] : {std::pair{0, 0}, {2, 2}, {0, 2}, {0, 1}}) {
+    const Vec3 p = Vec3::Unit(a) + Vec3::Unit(c), q = Vec3::Unit(a) - Vec3::Unit(c);
+    Vec3 second = nonlinear_holding_force(b, held, d * p) + nonlinear_holding_force(b, held, -d * p);
+    if (a != c) second -= nonlinear_holding_force(b, held, d * q) + nonlinear_holding_force(b, held, -d * q);
+    second /= 4.0 * d * d;
+    const Vec3 column = t.col(3 * a + c);
+    std::cout << "[curvature] T(., " << a << ", " << c << ") " << column.transpose() << " N/m^2, equilibria "
+              << second.transpose() << "\n";
+    EXPECT_LT((column - second).norm(), 5e-3 * t.norm());
+    EXPECT_EQ(t.col(3 * a + c), t.col(3 * c + a));
+  }
+  for (int i = 0; i < 3; ++i)  // a third derivative of one energy: symmetric in all three indices
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(t(k, 3 * i + j), t(i, 3 * k + j), 1e-6 * t.norm());
+  EXPECT_GT(t.norm(), 1e-3 * r.stiffness.norm() / 0.02);  // a body 2 cm tall stiffens by T d against K
+  const Body linear = body("fem", 6, 4);
+  const ContactResponse rl = contact_response(linear.k, linear.fixed, x, 3, held);
+  EXPECT_LT(contact_curvature(*linear.built.model, x, rl.modes, 1e-6).norm(), 1e-6 * t.norm());
+  EXPECT_THROW(contact_curvature(*b.built.model, x, r.modes, 0.0), InvalidArgument);
+  EXPECT_THROW(contact_curvature(*b.built.model, x, r.modes.topRows(3), 1e-6), InvalidArgument);
+}
+
 TEST(ContactStiffness, RefusesWhatItCannotCondense) {
   const Body b = body("fem", 4, 2);
   const VecX& x = b.built.model->rest_positions();

@@ -14,6 +14,14 @@ namespace py = pybind11;
 namespace hooke::python {
 namespace {
 
+// A copy of m as a (rows, cols) array.
+py::array_t<double> as_array(const MatX& m) {
+  py::array_t<double> a({m.rows(), m.cols()});
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    for (Eigen::Index j = 0; j < m.cols(); ++j) a.mutable_at(i, j) = m(i, j);
+  return a;
+}
+
 py::list as_list(const VecX& v) {
   py::list out;
   for (Eigen::Index i = 0; i < v.size(); ++i) out.append(v(i));
@@ -135,7 +143,7 @@ void define_live_simulation(py::module_& m) {
           "the grabbed nodes");
   py::class_<interactive::HapticModel>(m, "HapticModel",
                                        "The probe's local model after a deformation step: force(u) = force - "
-                                       "stiffness (u - offset).")
+                                       "stiffness d - curvature (d, d) / 2, d = u - offset.")
       .def_readonly("version", &interactive::HapticModel::version, "increases with every deformation step")
       .def_readonly("time", &interactive::HapticModel::time, "simulated time at the end of the step, s")
       .def_readonly("grabbed", &interactive::HapticModel::grabbed, "the probe holds nodes")
@@ -144,14 +152,12 @@ void define_live_simulation(py::module_& m) {
       .def_property_readonly(
           "force", [](const interactive::HapticModel& h) { return as_list(h.force); }, "the force after it, N")
       .def_property_readonly(
-          "stiffness",
-          [](const interactive::HapticModel& h) {
-            py::array_t<double> a({h.stiffness.rows(), h.stiffness.cols()});
-            for (Eigen::Index i = 0; i < h.stiffness.rows(); ++i)
-              for (Eigen::Index j = 0; j < h.stiffness.cols(); ++j) a.mutable_at(i, j) = h.stiffness(i, j);
-            return a;
-          },
+          "stiffness", [](const interactive::HapticModel& h) { return as_array(h.stiffness); },
           "the local stiffness, N/m (dim x dim)")
+      .def_property_readonly(
+          "curvature", [](const interactive::HapticModel& h) { return as_array(h.curvature); },
+          "the condensed energy's third derivative at the grab, N/m^2 (dim x dim^2: T[c, a dim + b]; 0 x 0 when "
+          "the model is linear, haptic_curvature=False)")
       .def(
           "render",
           [](const interactive::HapticModel& h, const py::object& u) {

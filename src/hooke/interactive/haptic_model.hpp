@@ -1,7 +1,8 @@
 #pragma once
 /// The probe's local model (multirate haptics: Cavusoglu & Tendick 2000; Mark et al. 1996): what the deformation
 /// loop hands a haptic loop after each of its steps, so the haptic loop renders a force at its own rate (1 kHz)
-/// from the device's position between two deformation steps: f(u) = force - stiffness (u - offset).
+/// from the device's position between two deformation steps: f(u) = force - stiffness (u - offset) - curvature (u -
+/// offset, u - offset) / 2.
 #include <hooke/core/error.hpp>
 #include <hooke/core/types.hpp>
 #include <string_view>
@@ -26,6 +27,17 @@ HapticStiffness haptic_stiffness_from_name(std::string_view name);
 /// Stable name of `stiffness`.
 std::string_view haptic_stiffness_name(HapticStiffness stiffness);
 
+/// The quasi-Newton tolerance (solve::QuasiNewtonOptions::tolerance) of a multirate deformation step, by default
+/// (the viewer's --haptic-rate, hooke bench --haptics): the haptic loop renders from the step's probe force, and
+/// after a long step the integrator's real-time default 1e-2 leaves it 7 % off the converged one (the 11 425-node
+/// bench cylinder, 1 mm drag in one 0.5 s step: 0.0280 against 0.0262 N); 1e-3 is within 0.1 % for one more
+/// iteration (docs/simulation.md, multirate haptics).
+inline constexpr double kDeformationTolerance = 1e-3;
+
+/// T(s): the stiffness' change per offset s, N/m (dim x dim; (T(s))(c, a) = sum_b T(c, a dim + b) s_b) for a
+/// curvature T (dim x dim^2, HapticModel::curvature). @pre s has T.rows() components
+MatX curvature_along(const MatX& curvature, const VecX& s);
+
 struct HapticModel {
   long version = 0;      ///< increases with every deformation step (0: no model yet)
   double time = 0.0;     ///< simulated time at the end of the step, s
@@ -34,11 +46,17 @@ struct HapticModel {
   VecX force;            ///< the force the body exerted on the probe after the step, N (dim)
   /// the local stiffness at the held nodes, N/m (dim x dim, symmetric positive semidefinite; HapticStiffness)
   MatX stiffness;
+  /// the condensed energy's third derivative at the grab, N/m^2 (dim x dim^2, solve::contact_curvature; empty:
+  /// the model is linear in the offset)
+  MatX curvature;
 
   /// The force on the probe at offset u, N (dim): zero without a grab. @pre u has dim components
   VecX render(const VecX& u) const {
     if (!grabbed || force.size() != u.size()) return VecX::Zero(u.size());
-    return force - stiffness * (u - offset);
+    const VecX d = u - offset;
+    VecX f = force - stiffness * d;
+    if (curvature.rows() == d.size()) f -= 0.5 * curvature_along(curvature, d) * d;
+    return f;
   }
 };
 

@@ -21,6 +21,7 @@ LiveSimulation make_simulation(const mesh::Mesh& m, const HapticsBenchmarkOption
   s.material = {material::Law::kLinear, 14630.0, o.poisson};
   s.dynamics.damping_mass = o.damping_mass;
   s.haptic_stiffness = o.stiffness;
+  s.haptic_curvature = o.curvature;
   s.simulator = o.simulator;
   s.dynamics.dt = dt;
   LiveSimulation sim(m, s);

@@ -22,7 +22,13 @@ struct HapticsBenchmarkOptions {
   double hold = 0.3;                  ///< s held after it
   double damping_mass = 20.0;         ///< Rayleigh alpha, 1/s
   HapticStiffness stiffness = HapticStiffness::kSecant;
-  solve::SimulatorOptions simulator;  ///< the deformation's integrator (and the reference's), default quasi-newton
+  bool curvature = true;  ///< LiveSettings::haptic_curvature
+  /// the deformation's integrator (and the reference's): quasi-newton at kDeformationTolerance by default
+  solve::SimulatorOptions simulator = [] {
+    solve::SimulatorOptions s;
+    s.quasi_newton.tolerance = kDeformationTolerance;
+    return s;
+  }();
   /// the deformation's step, s; 0: measured, 1.25 x the median wall time of 5 steps of 40 ms during the ramp's
   /// fastest drag, rounded up to a haptic period (a longer step may take longer: the real-time run says)
   double deformation_dt = 0.0;

@@ -49,6 +49,7 @@ struct LiveSimulation::Impl {
   solve::Probe probe;
   VecX grab_positions, offset, force;
   MatX contact_stiffness;  // of the grabbed nodes (empty: not computed since the grab or the rebuild)
+  MatX curvature;          // the condensed energy's third derivative, with it (empty: none, or not wanted)
   long steps = 0;          // since the rebuild, for HapticModel::version
   // The secant stiffness and the probe's offset and force after the previous step (empty: none since the grab).
   MatX secant;
@@ -56,6 +57,7 @@ struct LiveSimulation::Impl {
 
   void forget_local_model() {
     contact_stiffness.resize(0, 0);
+    curvature.resize(0, 0);
     secant.resize(0, 0);
     last_offset.resize(0);
     last_force.resize(0);
@@ -70,27 +72,49 @@ struct LiveSimulation::Impl {
       std::vector<char> clamp(static_cast<size_t>(rest.size()), 0);
       for (const int i : clamped)
         for (int a = 0; a < d; ++a) clamp[static_cast<size_t>(d * i + a)] = 1;
-      contact_stiffness =
-          solve::contact_stiffness(sim->rest_stiffness(), clamp, rest, d, probe.nodes, settings.haptic_region);
+      solve::ContactResponse r =
+          solve::contact_response(sim->rest_stiffness(), clamp, rest, d, probe.nodes, settings.haptic_region);
+      // The curvature where the body is now (the grab); a difference step of 1e-4 of the body's size.
+      if (settings.haptic_curvature)
+        curvature = solve::contact_curvature(*built.model, sim->positions(), r.modes,
+                                             1e-4 * mesh::bounding_box_diagonal(model.mesh), interaction_or_null());
+      contact_stiffness = std::move(r.stiffness);
     }
     return contact_stiffness;
+  }
+
+  const model::Interaction* interaction_or_null() const { return interaction ? &*interaction : nullptr; }
+
+  // The tangent stiffness at the offset: K, plus T(offset) when the model is curved (the offsets count from the
+  // grab, where the curvature is taken), projected onto the positive semidefinite matrices (a negative stiffness
+  // would feed energy into the device).
+  static MatX positive_part(const MatX& k) {
+    const Eigen::SelfAdjointEigenSolver<MatX> eig(0.5 * (k + k.transpose()));
+    return eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
   }
 
   // Powell-symmetric-Broyden: the smallest symmetric change of K with K s = y, s the probe's move over the step and
   // y minus the force's change; only for moves of at least 1 um along which the body pushed back (y . s > 0), then
   // projected onto the positive semidefinite matrices (a negative stiffness would feed energy into the device).
+  // With a curvature T the secant is the tangent at the last offset: the pair's y less the quadratic part T(s, s) / 2
+  // updates it there, and T(s) carries it to the new offset.
   void update_secant() {
     const int d = dim();
     if (secant.rows() != d) secant = condensed();
     if (last_offset.size() == d) {
-      const VecX s = offset - last_offset, y = -(force - last_force);
+      const VecX s = offset - last_offset;
+      VecX y = -(force - last_force);
+      MatX shift = MatX::Zero(d, d);
+      if (curvature.rows() == d) {
+        shift = curvature_along(curvature, s);
+        y -= 0.5 * shift * s;
+      }
       const double ss = s.squaredNorm();
       if (s.norm() >= 1e-6 && y.dot(s) > 0.0) {
         const VecX r = y - secant * s;
         secant += (r * s.transpose() + s * r.transpose()) / ss - (r.dot(s) / (ss * ss)) * (s * s.transpose());
-        const Eigen::SelfAdjointEigenSolver<MatX> eig(0.5 * (secant + secant.transpose()));
-        secant = eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
       }
+      secant = positive_part(secant + shift);
     }
     last_offset = offset;
     last_force = force;
@@ -252,9 +276,13 @@ HapticModel LiveSimulation::haptic_model() {
   if (m->settings.haptic_stiffness == HapticStiffness::kSecant) {
     if (m->secant.rows() != d) m->secant = m->condensed();  // at the grab, before a step has given a pair
     h.stiffness = m->secant;
+    h.curvature = m->curvature;
     return h;
   }
   h.stiffness = m->condensed();
+  h.curvature = m->curvature;
+  if (h.curvature.rows() == d && h.offset.squaredNorm() > 0.0)  // the tangent at the offset
+    h.stiffness = Impl::positive_part(h.stiffness + curvature_along(h.curvature, h.offset));
   return h;
 }
 

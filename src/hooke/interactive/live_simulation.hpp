@@ -31,6 +31,10 @@ struct LiveSettings {
   HapticStiffness haptic_stiffness = HapticStiffness::kSecant;
   /// its condensation region (HapticStiffness::kCondensed; solve::ContactStiffnessOptions)
   solve::ContactStiffnessOptions haptic_region;
+  /// the local model carries the condensed energy's third derivative at the grab (HapticModel::curvature,
+  /// solve::contact_curvature), so it follows the body's stiffening as the probe moves (docs/simulation.md:
+  /// the 11 425-node drag at a 0.5 s deformation step ...); with kCondensed and kSecant
+  bool haptic_curvature = true;
 };
 
 /// A static equilibrium under the probe's current displacement (what the viewer's FEM ghost shows).

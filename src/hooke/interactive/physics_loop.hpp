@@ -152,7 +152,8 @@ class PhysicsLoop {
   double m_drag_t0 = 0.0, m_drag_t1 = -1.0;
 };
 
-/// Carries out one `set` script command on settings (young, poisson, density, method, haptic-stiffness, the dynamics
+/// Carries out one `set` script command on settings (young, poisson, density, method, haptic-stiffness,
+/// haptic-curvature on|off, the dynamics
 /// fields: dt, gravity, damping-mass, ...; solve::dynamics_fields, and the integrator's: integrator, qn-iterations,
 /// cg-tolerance, ...; solve::simulator_fields).
 /// @throws InvalidArgument for a value that does not parse or is out of range

@@ -1,5 +1,6 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/core/sparse_cholesky.hpp>
 #include <hooke/solve/contact_stiffness.hpp>
@@ -11,6 +12,11 @@ namespace hooke::solve {
 
 MatX contact_stiffness(const SparseMatrix& k, const std::vector<char>& fixed, const VecX& positions, int dim,
                        const std::vector<int>& nodes, const ContactStiffnessOptions& options) {
+  return contact_response(k, fixed, positions, dim, nodes, options).stiffness;
+}
+
+ContactResponse contact_response(const SparseMatrix& k, const std::vector<char>& fixed, const VecX& positions, int dim,
+                                 const std::vector<int>& nodes, const ContactStiffnessOptions& options) {
   const Eigen::Index nd = k.rows();
   if (dim < 1 || k.cols() != nd || positions.size() != nd || static_cast<Eigen::Index>(fixed.size()) != nd ||
       nd % dim != 0)
@@ -93,7 +99,7 @@ MatX contact_stiffness(const SparseMatrix& k, const std::vector<char>& fixed, co
     throw SolverFailure(
         "contact_stiffness: the stiffness of the region around the held nodes is not positive "
         "definite (is the body held?)");
-  MatX kc(dim, dim), diagonal = MatX::Zero(dim, dim);
+  MatX kc(dim, dim), diagonal = MatX::Zero(dim, dim), modes = MatX::Zero(nd, dim);
   VecX u(m);
   for (int a = 0; a < dim; ++a) {
     u.setZero();
@@ -104,6 +110,11 @@ MatX contact_stiffness(const SparseMatrix& k, const std::vector<char>& fixed, co
       }
     factor.solve_in_place(u.data(), 1);
     for (const int h : nodes) u(dim * local[static_cast<size_t>(h)] + a) = 1.0;
+    for (size_t r = 0; r < region.size(); ++r)
+      for (int b = 0; b < dim; ++b) {
+        const Eigen::Index lr = dim * static_cast<Eigen::Index>(r) + b;
+        if (!held[static_cast<size_t>(lr)]) modes(dim * region[r] + b, a) = u(lr);
+      }
     for (int b = 0; b < dim; ++b) {
       double f = 0.0;
       for (const int h : nodes)  // symmetric k: row (h, b) read as its column
@@ -121,7 +132,41 @@ MatX contact_stiffness(const SparseMatrix& k, const std::vector<char>& fixed, co
   const double own = (0.5 * (diagonal + diagonal.transpose())).norm();
   if (!(Eigen::SelfAdjointEigenSolver<MatX>(kc).eigenvalues().minCoeff() > 1e-9 * own))
     throw SolverFailure("contact_stiffness: the held nodes' stiffness is singular (is the body held?)");
-  return kc;
+  return {kc, modes};
+}
+
+MatX contact_curvature(const model::Model& model, const VecX& positions, const MatX& modes, double step,
+                       const model::Interaction* interaction) {
+  const int dim = static_cast<int>(modes.cols());
+  if (dim < 1 || modes.rows() != model.dof_count() || positions.size() != model.dof_count())
+    throw InvalidArgument("contact_curvature: the positions and modes must have dof_count rows");
+  if (!(step > 0.0) || !std::isfinite(step)) throw InvalidArgument("contact_curvature: the step must be > 0 m");
+  const double largest = modes.cwiseAbs().maxCoeff();
+  if (!(largest > 0.0)) throw InvalidArgument("contact_curvature: the modes are zero");
+  // h X moves no node by more than `step` (2 h along a doubled mode: h = step / (2 largest)).
+  const double h = step / (2.0 * largest);
+  VecX g(model.dof_count()), sum(model.dof_count());
+  const auto gradient_at = [&](const VecX& direction, double sign) -> const VecX& {
+    model.gradient(positions + sign * h * direction, g, interaction);
+    if (!g.allFinite())
+      throw SolverFailure("contact_curvature: the gradient is not finite " + std::to_string(step) +
+                          " m from the state (an element inverts: use a smaller step)");
+    return g;
+  };
+  // Second directional difference of the gradient: D^2 G [X_a, X_b] = (G(+p) + G(-p) - G(+q) - G(-q)) / (4 h^2)
+  // with p = X_a + X_b, q = X_a - X_b (polarisation; q = 0 when a = b); error O(h^2).
+  MatX t(dim, dim * dim);
+  for (int a = 0; a < dim; ++a)
+    for (int b = a; b < dim; ++b) {
+      const VecX p = modes.col(a) + modes.col(b), q = modes.col(a) - modes.col(b);
+      sum = gradient_at(p, 1.0);
+      sum += gradient_at(p, -1.0);
+      sum -= gradient_at(q, 1.0);
+      sum -= gradient_at(q, -1.0);
+      sum /= 4.0 * h * h;
+      for (int c = 0; c < dim; ++c) t(c, a * dim + b) = t(c, b * dim + a) = modes.col(c).dot(sum);
+    }
+  return t;
 }
 
 }  // namespace hooke::solve

@@ -3,6 +3,7 @@
 /// Cavusoglu & Tendick 2000, Mark et al. 1996): the force a haptic loop renders between two deformation steps is
 /// f(u) = f0 - K_c (u - u0), with f0 the deformation step's probe force at offset u0 and K_c from here.
 #include <hooke/core/types.hpp>
+#include <hooke/model/model.hpp>
 #include <limits>
 #include <vector>
 
@@ -29,5 +30,28 @@ struct ContactStiffnessOptions {
 /// @throws InvalidArgument for bad sizes or nodes; SolverFailure when the region's matrix is not positive definite
 MatX contact_stiffness(const SparseMatrix& k, const std::vector<char>& fixed, const VecX& positions, int dim,
                        const std::vector<int>& nodes, const ContactStiffnessOptions& options = {});
+
+/// contact_stiffness with the displacement fields it condenses.
+struct ContactResponse {
+  MatX stiffness;  ///< K_c, N/m (dim x dim)
+  /// dof_count x dim: column a is the body's linear static displacement, m per m, when every held node moves by a
+  /// unit offset along axis a (1 on those nodes' DOFs along a, 0 on the fixed DOFs and outside the region)
+  MatX modes;
+};
+/// Same arguments, preconditions and errors as contact_stiffness.
+ContactResponse contact_response(const SparseMatrix& k, const std::vector<char>& fixed, const VecX& positions, int dim,
+                                 const std::vector<int>& nodes, const ContactStiffnessOptions& options = {});
+
+/// The condensed energy's third derivative at `positions`, N/m^2 (dim x dim^2): T(c, a dim + b) = E'''[X_a, X_b,
+/// X_c] with X the `modes` of contact_response, from central differences of `model`'s gradient. For the energy
+/// Psi(u) the body stores when the probe moves by u and the rest relaxes, Psi''' = E'''[X, X, X] at an
+/// equilibrium (the terms with the relaxation's second derivative vanish there), so the probe force is
+/// f(u0 + d) = f0 - K d - T(d, d) / 2 to second order: what the linear local model misses of a stretched body's
+/// stiffening (docs/simulation.md, multirate haptics).
+/// @param step  the largest node displacement of a difference, m (> 0; small against an element: the body must
+///              not invert within it)
+/// @throws InvalidArgument for sizes that do not match; SolverFailure when the gradient is not finite there
+MatX contact_curvature(const model::Model& model, const VecX& positions, const MatX& modes, double step,
+                       const model::Interaction* interaction = nullptr);
 
 }  // namespace hooke::solve
