@@ -33,7 +33,8 @@ struct LiveSettings {
   solve::ContactStiffnessOptions haptic_region;
   /// the local model carries the condensed energy's third derivative at the grab (HapticModel::curvature,
   /// solve::contact_curvature), so it follows the body's stiffening as the probe moves (docs/simulation.md:
-  /// the 11 425-node drag at a 0.5 s deformation step ...); with kCondensed and kSecant
+  /// the 11 425-node bench drag at a 0.5 s deformation step renders within 0.95 % of the full-rate force, 12 %
+  /// linear); used with kCondensed and kSecant, default on
   bool haptic_curvature = true;
 };
 
