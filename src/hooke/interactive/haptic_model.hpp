@@ -47,7 +47,8 @@ struct HapticModel {
   /// the local stiffness at the held nodes, N/m (dim x dim, symmetric positive semidefinite; HapticStiffness)
   MatX stiffness;
   /// the condensed energy's third derivative at the grab, N/m^2 (dim x dim^2, solve::contact_curvature; empty:
-  /// the model is linear in the offset)
+  /// the model is linear in the offset, when LiveSettings::haptic_curvature is off or an element of the body
+  /// inverts within the difference step at the grab)
   MatX curvature;
 
   /// The force on the probe at offset u, N (dim): zero without a grab. @pre u has dim components

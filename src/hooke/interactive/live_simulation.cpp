@@ -74,10 +74,19 @@ struct LiveSimulation::Impl {
         for (int a = 0; a < d; ++a) clamp[static_cast<size_t>(d * i + a)] = 1;
       solve::ContactResponse r =
           solve::contact_response(sim->rest_stiffness(), clamp, rest, d, probe.nodes, settings.haptic_region);
-      // The curvature where the body is now (the grab); a difference step of 1e-4 of the body's size.
+      // The curvature where the body is now (the grab); a difference step of 1e-4 of the body's size, 1e-6 where an
+      // element inverts within that, and none (the linear model, HapticModel::curvature empty) where it inverts
+      // within 1e-6 too: the body is nearly crushed there, and a grab must not stop the simulation.
       if (settings.haptic_curvature)
-        curvature = solve::contact_curvature(*built.model, sim->positions(), r.modes,
-                                             1e-4 * mesh::bounding_box_diagonal(model.mesh), interaction_or_null());
+        for (const double step : {1e-4, 1e-6}) {
+          try {
+            curvature = solve::contact_curvature(*built.model, sim->positions(), r.modes,
+                                                 step * mesh::bounding_box_diagonal(model.mesh), interaction_or_null());
+            break;
+          } catch (const SolverFailure&) {
+            curvature.resize(0, 0);
+          }
+        }
       contact_stiffness = std::move(r.stiffness);
     }
     return contact_stiffness;
