@@ -56,7 +56,8 @@ struct HapticModel {
     if (!grabbed || force.size() != u.size()) return VecX::Zero(u.size());
     const VecX d = u - offset;
     VecX f = force - stiffness * d;
-    if (curvature.rows() == d.size()) f -= 0.5 * curvature_along(curvature, d) * d;
+    if (curvature.rows() == d.size())  // T(d, d) = sum_a d_a T_a d, T_a the a-th dim x dim block
+      for (Eigen::Index a = 0; a < d.size(); ++a) f -= 0.5 * d(a) * (curvature.middleCols(a * d.size(), d.size()) * d);
     return f;
   }
 };

@@ -94,9 +94,9 @@ struct LiveSimulation::Impl {
 
   const model::Interaction* interaction_or_null() const { return interaction ? &*interaction : nullptr; }
 
-  // The tangent stiffness at the offset: K, plus T(offset) when the model is curved (the offsets count from the
-  // grab, where the curvature is taken), projected onto the positive semidefinite matrices (a negative stiffness
-  // would feed energy into the device).
+  // k's symmetric part projected onto the positive semidefinite matrices (a negative stiffness would feed energy
+  // into the device): what the local model renders, the secant after its update and the condensed stiffness plus
+  // T(offset), its tangent at the offset (the offsets count from the grab, where the curvature is taken).
   static MatX positive_part(const MatX& k) {
     const Eigen::SelfAdjointEigenSolver<MatX> eig(0.5 * (k + k.transpose()));
     return eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();

@@ -98,8 +98,7 @@ void apply_setting(LiveSettings& s, const std::string& key, const std::string& v
   } else if (key == "haptic-stiffness") {
     s.haptic_stiffness = haptic_stiffness_from_name(value);
   } else if (key == "haptic-curvature") {
-    if (value != "on" && value != "off") throw InvalidArgument("haptic-curvature takes on or off, not '" + value + "'");
-    s.haptic_curvature = value == "on";
+    s.haptic_curvature = solve::setting_flag(key, value);
   } else if (!solve::set_dynamics_field(s.dynamics, key, value) &&
              !solve::set_simulator_field(s.simulator, key, value)) {
     throw InvalidArgument("unknown setting '" + key + "'");

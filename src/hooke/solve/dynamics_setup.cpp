@@ -30,16 +30,19 @@ double setting_number(std::string_view name, std::string_view text) {
   return v;
 }
 
+bool setting_flag(std::string_view name, std::string_view text) {
+  if (text != "on" && text != "off")
+    throw InvalidArgument("set " + std::string(name) + " takes on or off, not '" + std::string(text) + "'");
+  return text == "on";
+}
+
 bool set_dynamics_field(DynamicsSetup& setup, std::string_view name, std::string_view text) {
   for (const DynamicsField& f : kFields) {
     if (f.name != name) continue;
-    if (f.number) {
+    if (f.number)
       setup.*f.number = setting_number(name, text);
-    } else {
-      if (text != "on" && text != "off")
-        throw InvalidArgument("set " + std::string(name) + " takes on or off, not '" + std::string(text) + "'");
-      setup.*f.flag = text == "on";
-    }
+    else
+      setup.*f.flag = setting_flag(name, text);
     return true;
   }
   return false;

@@ -32,6 +32,9 @@ std::span<const DynamicsField> dynamics_fields();
 
 /// `text` as a finite number for setting `name`. @throws InvalidArgument ("set NAME: 'TEXT' is not a finite number")
 double setting_number(std::string_view name, std::string_view text);
+/// `text` ("on" or "off") as a flag for setting `name`. @throws InvalidArgument ("set NAME takes on or off, not
+/// 'TEXT'")
+bool setting_flag(std::string_view name, std::string_view text);
 
 /// Sets the field of `setup` named `name` from `text`: "on" or "off" for a flag, a finite number otherwise (ranges
 /// are validate()'s). @return false when no field has that name. @throws InvalidArgument for a malformed value
