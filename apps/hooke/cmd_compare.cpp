@@ -21,7 +21,7 @@ namespace {
 
 struct CompareCli {
   ModelSource in;
-  std::string load = "stretch", reference = "linear", out_dir;
+  std::string load = "stretch", reference = "linear", control = "traction", out_dir;
   int layers = 4;
   bool no_figure = false;
   double traction = std::nan(""), strain = std::nan("");
@@ -32,14 +32,31 @@ void print_comparison(const CompareCli& o, const calibrate::CalibratedModel& mod
   const std::string label = model.surface
                                 ? "surface model (scheme " + model.surface->scheme + ")"
                                 : model.method + " model (" + std::to_string(model.springs.pairs.size()) + " springs)";
-  std::printf("hooke compare: %s, %s vs %s FEM of %d elements, %s, traction %.6g Pa\n", model.mesh.source.c_str(),
-              label.c_str(), o.reference.c_str(), c.fem_mesh.element_count(), o.load.c_str(), c.load.traction_pa);
+  if (c.load.control == model::LoadControl::kDisplacement)
+    std::printf("hooke compare: %s, %s vs %s FEM of %d elements, %s, top moved %.6g %s (%.4g %% of height)\n",
+                model.mesh.source.c_str(), label.c_str(), o.reference.c_str(), c.fem_mesh.element_count(),
+                o.load.c_str(), c.load.displacement * to_unit, o.in.unit.c_str(),
+                100.0 * c.load.displacement / c.load.height);
+  else
+    std::printf("hooke compare: %s, %s vs %s FEM of %d elements, %s, traction %.6g Pa\n", model.mesh.source.c_str(),
+                label.c_str(), o.reference.c_str(), c.fem_mesh.element_count(), o.load.c_str(), c.load.traction_pa);
   std::printf("  fem       %s: %s\n", std::string(solve::status_name(c.fem_report.status)).c_str(),
               c.fem_report.message.c_str());
   std::printf("  springs   %s: %s\n", std::string(solve::status_name(c.spring_report.status)).c_str(),
               c.spring_report.message.c_str());
+  // Under traction control a model that loses stability or stops short has a limit load below the one asked for.
+  const auto limit = [&](const solve::SolveReport& r, const char* who) {
+    if (c.load.control == model::LoadControl::kTraction && r.status != solve::SolveStatus::kConverged)
+      std::printf("  limit     %s: %.4g of the load (%.6g Pa)\n", who,
+                  r.critical_load_factor > 0.0 ? r.critical_load_factor : r.load_factor,
+                  (r.critical_load_factor > 0.0 ? r.critical_load_factor : r.load_factor) * c.load.traction_pa);
+  };
+  limit(c.fem_report, "fem");
+  limit(c.spring_report, "springs");
   solve::require_converged(c.fem_report);
   solve::require_converged(c.spring_report);
+  std::printf("  force     on the top: fem %.6g N, model %.6g N along the load, relative error %.4g\n",
+              c.fem_reaction.dot(c.load.direction), c.spring_reaction.dot(c.load.direction), c.reaction_error);
   std::printf("  error     max %.4g %s (%.3f %% of height), mean %.4g %s (%.3f %% of height), relative L2 %.4g\n",
               c.max_error * to_unit, o.in.unit.c_str(), 100.0 * c.max_error / c.load.height, c.mean_error * to_unit,
               o.in.unit.c_str(), 100.0 * c.mean_error / c.load.height, c.relative_l2);
@@ -79,6 +96,9 @@ int run_compare(const CompareCli& o) {
   co.reference = material::law_from_name(o.reference);
   co.traction_pa = std::isnan(o.traction) ? 0.0 : o.traction;
   co.strain = std::isnan(o.strain) ? 0.0 : o.strain;
+  co.control = model::load_control_from_name(o.control);
+  if (co.control == model::LoadControl::kDisplacement && std::isnan(o.strain))
+    throw InvalidArgument("--control displacement needs --strain (the top is moved by strain x height)");
   const experiments::Comparison c = experiments::compare_calibrated(model, co, o.layers);
   print_comparison(o, model, c);
   if (o.out_dir.empty()) return 0;
@@ -100,6 +120,10 @@ Action add_compare_command(CLI::App& app) {
   cmd->add_option("--traction", o->traction, "Traction on the top boundary, Pa");
   cmd->add_option("--strain", o->strain, "Traction giving this mean top strain in the linear FEM");
   cmd->add_option("--reference", o->reference, "FEM law: linear, stvk or neohookean")->capture_default_str();
+  cmd->add_option("--control", o->control,
+                  "traction (a dead load on the top) or displacement (the top moved by strain x height; the force "
+                  "on it compared)")
+      ->capture_default_str();
   cmd->add_option("-o,--output", o->out_dir,
                   "Folder for compare.vtu (both displacement fields and the node error) and compare.png");
   cmd->add_flag("--no-figure", o->no_figure, "Write the figure spec compare.json but do not run matplotlib");

@@ -52,6 +52,7 @@ mesh::TetrahedralizeOptions tetrahedralize_options(const TetrahedralizeInput& in
 struct ModelSource {
   std::string mesh_path, unit = "m", model_path, method = "auto", law = "linear", plane = "stress";
   double young = std::nan(""), poisson = std::nan(""), thickness = 1e-3, density = 1000.0;  ///< NaN: not given
+  double spring_exponent = 1.0, volume_exponent = 1.0;  ///< the term law (calibrate::ModelOptions)
   SurfaceInput surface;
   TetrahedralizeInput tetrahedralize;  ///< a closed surface given to a tet method
 };

@@ -111,6 +111,13 @@ void add_model_source_options(CLI::App* cmd, ModelSource& in) {
   cmd->add_option("--thickness", in.thickness, "Plate thickness for 2D meshes, m")->capture_default_str();
   cmd->add_option("--density", in.density, "Density for the lumped masses, kg/m^3")->capture_default_str();
   cmd->add_option("--plane", in.plane, "2D models: stress or strain")->capture_default_str();
+  cmd->add_option("--spring-exponent", in.spring_exponent,
+                  "Springs' large-strain law: Seth-Hill exponent m of E = k l0^2 e_m(l/l0)^2 / 2 (1: Hookean)")
+      ->capture_default_str();
+  cmd->add_option("--volume-exponent", in.volume_exponent,
+                  "Volume terms' large-strain law: Seth-Hill exponent q of E = k_V e_q(V/V0)^2 / 2 (1: quadratic, "
+                  "<= 0: a barrier against flattening)")
+      ->capture_default_str();
   add_surface_options(cmd, in.surface);
   add_tetrahedralize_options(cmd, in.tetrahedralize);
 }
@@ -140,6 +147,8 @@ calibrate::CalibratedModel load_model(const ModelSource& source) {
   calibrate::ModelOptions mo;
   mo.method = in.method;
   mo.density = in.density;
+  mo.spring_exponent = in.spring_exponent;
+  mo.volume_exponent = in.volume_exponent;
   if (in.method == "surface" || in.method == "auto") mo.surface = surface_options(in.surface);
   mo.tetrahedralize = tetrahedralize_options(in.tetrahedralize, ro.metres_per_unit);
   calibrate::CalibratedModel model = calibrate::calibrate_model(io::read_mesh(in.mesh_path, ro), mat, mo);

@@ -81,7 +81,8 @@ def tetrahedralize(surface, **options):
     return _hooke._tetrahedralize(surface, _hooke._tetrahedralize_options(**options))
 
 
-def calibrate(mesh, material, method="auto", density=1000.0, tetrahedralize=None):
+def calibrate(mesh, material, method="auto", density=1000.0, tetrahedralize=None, law="linear", strain_range=0.0,
+              spring_exponent=1.0, volume_exponent=1.0):
     """Calibrates the model `method` (one of hooke.methods()) on `mesh` for `material`. "auto" (the default) picks
     the method of smallest measured error for the mesh's element kind and nu; the model's .method is the one picked
     and .choice says why. A closed surface is tetrahedralized first for every method but "surface" (.meshing says
@@ -92,6 +93,11 @@ def calibrate(mesh, material, method="auto", density=1000.0, tetrahedralize=None
     density         kg/m^3, for the lumped masses
     tetrahedralize  dict of hooke.tetrahedralize's options (size, max_volume, surface_mesh, quality, ...), for a
                     closed surface
+    law, strain_range  with strain_range > 0: the springs' and volume terms' large-strain law fitted to the FEM of
+                    `law` ("linear", "stvk", "neohookean") up to that strain (.spring_exponent, .volume_exponent;
+                    .choice says what was measured); docs/methods/large_strain.md
+    spring_exponent, volume_exponent  the large-strain law given directly (Seth-Hill exponents, 1: Hookean springs
+                    and quadratic volume terms)
 
     Returns a hooke.Model: .pairs (S, 2), .stiffness (S,) N/m, .rest_length (S,) m, .volume_tets (T, 4),
     .volume_stiffness (T,) J, .rest_volume (T,) m^3, .masses (dim * N,) kg. The method's validity warnings are
@@ -102,7 +108,12 @@ def calibrate(mesh, material, method="auto", density=1000.0, tetrahedralize=None
     if not isinstance(material, Material):
         raise TypeError("calibrate: material must be a hooke.Material")
     options = _hooke._tetrahedralize_options(**(tetrahedralize or {}))
-    model = _hooke._calibrate(mesh, material, method, float(density), options)
+    model = _hooke._calibrate(mesh, material, method, float(density), options, float(spring_exponent),
+                              float(volume_exponent))
+    if strain_range:
+        _hooke._fit_term_law(model, law, float(strain_range))
+    elif law != "linear":
+        raise ValueError("calibrate: law=%r needs strain_range (the strain up to which the model follows it)" % law)
     for w in model.warnings:
         _warnings.warn(w, ValidityWarning, stacklevel=2)
     return model

@@ -18,10 +18,13 @@ SparseMatrix hessian(const SpringBlock& b, const VecX& x, bool psd = false) {
   return model::block_hessian(b, b.dim(), x, psd);
 }
 
+// Hookean springs (m = 1) and the large-strain Seth-Hill laws (docs/methods/large_strain.md), springs both stretched
+// and compressed; the PSD-projected Hessian has no negative eigenvalue.
 TEST(SpringBlock, GradientAndHessianMatchFiniteDifferences) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int dim : {2, 3}) {
+  for (const auto& [dim, m] :
+       std::vector<std::pair<int, double>>{{2, 1.0}, {3, 1.0}, {2, -1.0}, {3, 0.0}, {3, 0.5}, {2, 2.0}}) {
     const int n = 6;
     VecX x(dim * n);
     for (Eigen::Index i = 0; i < x.size(); ++i) x(i) = 0.01 * u(rng);
@@ -32,10 +35,11 @@ TEST(SpringBlock, GradientAndHessianMatchFiniteDifferences) {
       const auto [i, j] = pairs[static_cast<size_t>(s)];
       l0(s) = (x.segment(dim * i, dim) - x.segment(dim * j, dim)).norm() * (s % 2 ? 1.2 : 0.85);  // both signs
     }
-    const SpringBlock b(dim, pairs, k, l0);
+    const SpringBlock b(dim, pairs, k, l0, m);
     test::expect_derivatives_match_finite_differences(b, dim, x, 1e-8, 1e-6);
     Eigen::SelfAdjointEigenSolver<MatX> eig{MatX(hessian(b, x, true))};
-    EXPECT_GT(eig.eigenvalues().minCoeff(), -1e-9 * eig.eigenvalues().maxCoeff());
+    EXPECT_GT(eig.eigenvalues().minCoeff(), -1e-9 * eig.eigenvalues().maxCoeff()) << "m " << m;
+    EXPECT_EQ(b.central_springs() != nullptr, m == 1.0);  // the local/global split is for Hookean springs only
   }
 }
 

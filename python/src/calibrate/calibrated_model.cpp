@@ -17,6 +17,9 @@ py::dict certificate_case(const calibrate::CertificateCase& c) {
   d["max_error"] = c.max_error;
   d["mean_error"] = c.mean_error;
   d["relative_l2"] = c.relative_l2;
+  d["control"] = c.control;
+  d["reference"] = c.reference;
+  d["force_error"] = c.force_error;
   return d;
 }
 
@@ -77,6 +80,12 @@ void define_calibrated_model(py::module_& m) {
             return l;
           },
           "measured error against the linear FEM per load case (list of dict), empty until certified")
+      .def_property_readonly(
+          "spring_exponent", [](const CalibratedModel& c) { return c.springs.spring_exponent; },
+          "Seth-Hill exponent m of the springs' large-strain law (1: Hookean)")
+      .def_property_readonly(
+          "volume_exponent", [](const CalibratedModel& c) { return c.springs.volume_exponent; },
+          "Seth-Hill exponent q of the volume terms' large-strain law (1: quadratic)")
       .def_property_readonly(
           "is_surface_model", [](const CalibratedModel& c) { return c.surface.has_value(); },
           "True for the Arnab & Raja surface model")

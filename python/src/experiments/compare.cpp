@@ -29,14 +29,30 @@ void define_compare(py::module_& m) {
       .def_readonly("fem_report", &Comparison::fem_report, "SolveReport of the FEM reference")
       .def_readonly("model_report", &Comparison::spring_report, "SolveReport of the model")
       .def_property_readonly(
-          "traction", [](const Comparison& c) { return c.load.traction_pa; }, "Pa");
+          "traction", [](const Comparison& c) { return c.load.traction_pa; }, "Pa")
+      .def_property_readonly(
+          "displacement", [](const Comparison& c) { return c.load.displacement; },
+          "the top's move under displacement control, m")
+      .def_property_readonly(
+          "control", [](const Comparison& c) { return std::string(model::load_control_name(c.load.control)); },
+          "'traction' or 'displacement'")
+      .def_property_readonly(
+          "fem_force", [](const Comparison& c) { return c.fem_reaction; },
+          "(dim,) total force on the top nodes in the FEM's equilibrium, N")
+      .def_property_readonly(
+          "model_force", [](const Comparison& c) { return c.spring_reaction; },
+          "(dim,) total force on the top nodes in the model's equilibrium, N")
+      .def_readonly("force_error", &Comparison::reaction_error, "|model_force - fem_force| / |fem_force|");
   m.def(
       "compare",
       [](const calibrate::CalibratedModel& model, const std::string& load, const py::object& strain,
-         const py::object& traction, const std::string& reference, int layers) {
+         const py::object& traction, const std::string& reference, int layers, const std::string& control) {
         experiments::CompareOptions o;
         o.load = model::load_kind_from_name(load);
         o.reference = material::law_from_name(reference);
+        o.control = model::load_control_from_name(control);
+        if (o.control == model::LoadControl::kDisplacement && strain.is_none())
+          throw py::value_error("compare: displacement control needs strain (the top moved by strain x height)");
         if (strain.is_none() == traction.is_none())
           throw py::value_error("compare: give exactly one of strain and traction (Pa)");
         if (!strain.is_none()) o.strain = strain.cast<double>();
@@ -47,9 +63,10 @@ void define_compare(py::module_& m) {
         return experiments::compare_calibrated(model, o, layers);
       },
       py::arg("model"), py::arg("load") = "stretch", py::arg("strain") = py::none(), py::arg("traction") = py::none(),
-      py::arg("reference") = "linear", py::arg("layers") = 4,
+      py::arg("reference") = "linear", py::arg("layers") = 4, py::arg("control") = "traction",
       "The model and the FEM (law `reference`: linear, stvk, neohookean) under the load case 'stretch', 'compress' "
-      "or 'shear' at mean linear-FEM `strain` or `traction` (Pa); the surface model against tets of `layers` "
+      "or 'shear' at mean linear-FEM `strain` or `traction` (Pa), or with control='displacement' the top moved by "
+      "strain x height (the forces on it compared: force_error); the surface model against tets of `layers` "
       "layers. Returns a Comparison.");
 }
 

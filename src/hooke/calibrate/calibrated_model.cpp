@@ -127,6 +127,10 @@ void validate_model(const CalibratedModel& m, const ModelRejection& reject) {
                          std::to_string(n) + " nodes");
   for (int i = 0; i < n; ++i) c.positive(entry("masses", i), m.masses(d * i), "mass");
   const SpringModel& s = m.springs;
+  // A law's exponent of a few units already changes a term's stiffness at 50 % strain by orders of magnitude.
+  for (const auto& [name, q] : {std::pair{"term_law.spring_exponent", s.spring_exponent},
+                                std::pair{"term_law.volume_exponent", s.volume_exponent}})
+    if (!(q >= -8.0 && q <= 8.0)) c.fail(name, "exponent " + std::to_string(q) + " must be a number in [-8, 8]");
   if (s.stiffness.size() != static_cast<Eigen::Index>(s.pairs.size()) ||
       s.rest_length.size() != static_cast<Eigen::Index>(s.pairs.size()))
     c.fail("springs", "need a stiffness and a rest length each");

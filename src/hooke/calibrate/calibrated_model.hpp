@@ -45,13 +45,16 @@ struct SurfaceTerms {
   VecX normal_length;         ///< L'_i per node, m (> 0)
 };
 
-/// The measured error of a model against the linear FEM on one load case (`hooke calibrate --certify`).
+/// The measured error of a model against the FEM on one load case (`hooke calibrate --certify`).
 struct CertificateCase {
-  std::string load;          ///< "stretch", "compress" or "shear"
-  double strain = 0.0;       ///< mean top strain of the linear FEM
-  double max_error = 0.0;    ///< max node distance |x_model - x_fem|, m
-  double mean_error = 0.0;   ///< mean node distance, m
-  double relative_l2 = 0.0;  ///< ||u_model - u_fem|| / ||u_fem|| over all nodes
+  std::string load;                  ///< "stretch", "compress" or "shear"
+  double strain = 0.0;               ///< mean top strain: of the linear FEM (traction), or the top's move / height
+  double max_error = 0.0;            ///< max node distance |x_model - x_fem|, m
+  double mean_error = 0.0;           ///< mean node distance, m
+  double relative_l2 = 0.0;          ///< ||u_model - u_fem|| / ||u_fem|| over all nodes
+  std::string control = "traction";  ///< "traction" or "displacement" (model::LoadControl)
+  std::string reference = "linear";  ///< the FEM's law: "linear", "stvk" or "neohookean"
+  double force_error = 0.0;          ///< |R_model - R_fem| / |R_fem| of the force on the top (displacement control)
 };
 
 /// A model ready to be built into term blocks (build_model) or written to a file (write_model).

@@ -99,6 +99,8 @@ CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material
       const Method method = method_from_name(options.method);
       out.warnings = validity_warnings(mesh, {material}, method);
       out.springs = calibrate(mesh, {material}, method);
+      out.springs.spring_exponent = options.spring_exponent;
+      out.springs.volume_exponent = options.volume_exponent;
     }
     out.masses = model::lumped_masses(mesh, options.density, material.thickness);
   }

@@ -20,6 +20,10 @@ struct ModelOptions {
   SurfaceOptions surface;   ///< "surface" only; its density is replaced by `density`
   /// How a closed surface mesh is made into tets for every method but "surface" (mesh::tetrahedralize).
   mesh::TetrahedralizeOptions tetrahedralize;
+  /// The spring methods' term law (SpringModel::spring_exponent, volume_exponent; docs/methods/large_strain.md):
+  /// Seth-Hill exponents in [-8, 8], 1 (default) Hookean springs and quadratic volume terms.
+  double spring_exponent = 1.0;
+  double volume_exponent = 1.0;
 };
 
 /// Every name ModelOptions::method accepts: "auto", the calibration methods, then "surface" and "fem".

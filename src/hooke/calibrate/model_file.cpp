@@ -104,15 +104,24 @@ ordered model_document(const CalibratedModel& m) {
     volume[static_cast<size_t>(t)].push_back(s.rest_volume(t));
   }
   j["volume_terms"] = std::move(volume);
+  if (s.spring_exponent != 1.0 || s.volume_exponent != 1.0)  // Hookean springs and quadratic volume terms: no key
+    j["term_law"] = {{"spring_exponent", s.spring_exponent}, {"volume_exponent", s.volume_exponent}};
   j["surface"] = m.surface ? surface_document(*m.surface) : ordered(nullptr);
   j["warnings"] = m.warnings;
   ordered certificate = ordered::array();
-  for (const CertificateCase& c : m.certificate)
-    certificate.push_back({{"load", c.load},
-                           {"strain", c.strain},
-                           {"max_error", c.max_error},
-                           {"mean_error", c.mean_error},
-                           {"relative_l2", c.relative_l2}});
+  for (const CertificateCase& c : m.certificate) {
+    ordered one = {{"load", c.load},
+                   {"strain", c.strain},
+                   {"max_error", c.max_error},
+                   {"mean_error", c.mean_error},
+                   {"relative_l2", c.relative_l2}};
+    if (c.control != "traction" || c.reference != "linear") {  // the small-strain certificate's rows stay as they were
+      one["control"] = c.control;
+      one["reference"] = c.reference;
+      one["force_error"] = c.force_error;
+    }
+    certificate.push_back(std::move(one));
+  }
   j["certificate"] = std::move(certificate);
   return j;
 }
@@ -369,8 +378,12 @@ std::vector<CertificateCase> read_certificate(const Reader& r, const json& j) {
   const json& a = r.array(j, "certificate");
   for (size_t i = 0; i < a.size(); ++i) {
     const std::string where = Reader::at("certificate", i);
-    r.only_keys(a[i], where, {"load", "strain", "max_error", "mean_error", "relative_l2"});
+    r.only_keys(a[i], where,
+                {"load", "strain", "max_error", "mean_error", "relative_l2", "control", "reference", "force_error"});
     CertificateCase c;
+    if (a[i].contains("control")) c.control = r.string(a[i]["control"], where + ".control");
+    if (a[i].contains("reference")) c.reference = r.string(a[i]["reference"], where + ".reference");
+    if (a[i].contains("force_error")) c.force_error = r.number(a[i]["force_error"], where + ".force_error");
     c.load = r.string(r.key(a[i], where, "load"), where + ".load");
     c.strain = r.number(r.key(a[i], where, "strain"), where + ".strain");
     c.max_error = r.number(r.key(a[i], where, "max_error"), where + ".max_error");
@@ -459,9 +472,9 @@ CalibratedModel model_from_json(const json& j, const std::string& source) {
     r.fail("schema_version",
            "is " + version.dump() + "; this hooke reads schema version " + std::to_string(kModelSchemaVersion));
   r.only_keys(j, "",
-              {"format", "schema_version", "hooke_version", "method", "equation", "method_choice", "meshing",
-               "source_mesh", "units", "material", "element_kind", "nodes", "elements", "masses", "springs",
-               "volume_terms", "surface", "warnings", "certificate"});
+              {"format",      "schema_version", "hooke_version", "method",       "equation", "method_choice", "meshing",
+               "source_mesh", "units",          "material",      "element_kind", "nodes",    "elements",      "masses",
+               "springs",     "volume_terms",   "term_law",      "surface",      "warnings", "certificate"});
   if (j.contains("units")) {
     const json& u = j["units"];
     r.only_keys(u, "units", {"length", "stiffness", "mass", "volume_stiffness"});
@@ -495,6 +508,12 @@ CalibratedModel model_from_json(const json& j, const std::string& source) {
   }
   read_springs(r, j, n, m.springs);
   read_volume_terms(r, j, n, d, m.springs);
+  if (j.contains("term_law")) {
+    const json& law = j["term_law"];
+    r.only_keys(law, "term_law", {"spring_exponent", "volume_exponent"});
+    m.springs.spring_exponent = r.number(r.key(law, "term_law", "spring_exponent"), "term_law.spring_exponent");
+    m.springs.volume_exponent = r.number(r.key(law, "term_law", "volume_exponent"), "term_law.volume_exponent");
+  }
   if (j.contains("surface") && !j["surface"].is_null()) m.surface = read_surface(r, j["surface"], n);
   if (j.contains("warnings")) {
     const json& w = r.array(j["warnings"], "warnings");

@@ -8,11 +8,14 @@ namespace hooke::calibrate {
 
 void add_spring_terms(model::Model& model, const SpringModel& s) {
   if (!s.pairs.empty())
-    model.add(std::make_unique<springs::SpringBlock>(model.dim(), s.pairs, s.stiffness, s.rest_length));
+    model.add(
+        std::make_unique<springs::SpringBlock>(model.dim(), s.pairs, s.stiffness, s.rest_length, s.spring_exponent));
   if (s.volume_tets.rows() > 0 && s.volume_tets.cols() == 3)  // area terms of planar triangles (any-nu-triangle)
-    model.add(std::make_unique<springs::TriangleAreaBlock>(s.volume_tets, s.volume_stiffness, s.rest_volume));
+    model.add(std::make_unique<springs::TriangleAreaBlock>(s.volume_tets, s.volume_stiffness, s.rest_volume,
+                                                           s.volume_exponent));
   else if (s.volume_tets.rows() > 0)
-    model.add(std::make_unique<springs::TetVolumeBlock>(s.volume_tets, s.volume_stiffness, s.rest_volume));
+    model.add(
+        std::make_unique<springs::TetVolumeBlock>(s.volume_tets, s.volume_stiffness, s.rest_volume, s.volume_exponent));
 }
 
 std::shared_ptr<model::Model> make_model(const mesh::Mesh& mesh, const SpringModel& s) {

@@ -18,6 +18,11 @@ struct SpringModel {
   RowMatXi volume_tets;
   VecX volume_stiffness;  ///< k_V (or k_A) per element, J
   VecX rest_volume;       ///< V0 per tet, m^3 (or A0 per triangle, m^2)
+  /// The terms' large-strain law (docs/methods/large_strain.md): the Seth-Hill exponents of the springs (m, energy
+  /// k l0^2 e_m(l / l0)^2 / 2) and of the volume or area terms (q, energy k_V e_q(V / V0)^2 / 2). Both 1 (default):
+  /// Hookean springs and quadratic volume terms. Any value keeps the stiffness at rest.
+  double spring_exponent = 1.0;
+  double volume_exponent = 1.0;
 };
 
 /// Adds the blocks of `springs` to `model`: a SpringBlock when there are springs, a TetVolumeBlock (a

@@ -13,7 +13,11 @@ struct CompareOptions {
   calibrate::Method method = calibrate::Method::kLloydTet;  ///< how the springs are calibrated
   model::LoadKind load = model::LoadKind::kStretch;         ///< load case
   double traction_pa = 0.0;                                 ///< traction, Pa (ignored when strain != 0)
-  double strain = 0.0;  ///< != 0: the traction giving this mean linear-FEM strain (then it must be > 0)
+  /// != 0: the traction giving this mean linear-FEM strain (then it must be > 0); under displacement control the top
+  /// moved by strain x height
+  double strain = 0.0;
+  /// traction (default) or displacement control; displacement control needs `strain` (> 0)
+  model::LoadControl control = model::LoadControl::kTraction;
   material::Law reference = material::Law::kLinear;  ///< FEM reference law
   /// the model's static solve starts with this many equal load steps (halved where Newton fails; every accepted
   /// state checked for stability), default 4; certify uses 1 at its small strains
@@ -30,6 +34,10 @@ struct Comparison {
   double max_error = 0.0;    ///< m
   double mean_error = 0.0;   ///< m
   double relative_l2 = 0.0;  ///< ||x_spring - x_fem|| / ||x_fem - X|| over all (compared) nodes
+  /// total force on the top nodes (model::top_reaction), N (dim): under displacement control what the instrument that
+  /// moved them feels; under traction control the applied load once in equilibrium
+  VecX fem_reaction, spring_reaction;
+  double reaction_error = 0.0;  ///< |R_spring - R_fem| / |R_fem|
   solve::SolveReport fem_report, spring_report;
   calibrate::SpringModel springs;
 };
@@ -73,6 +81,29 @@ Comparison compare_surface(const mesh::Mesh& surface, const material::Material& 
 /// is compared as compare_surface does, on `layers` radial layers around model.surface->centre.
 /// @throws InvalidArgument for the "fem" model (nothing to compare) or a model validate_model rejects
 Comparison compare_calibrated(const calibrate::CalibratedModel& model, const CompareOptions& options, int layers = 4);
+
+/// The FEM reference of one load case: the boundary conditions, the equilibrium and the force on the top there.
+struct Reference {
+  model::LoadCase load;
+  solve::StaticResult fem;
+  VecX reaction;  ///< model::top_reaction at fem.positions, N (dim)
+};
+
+/// The FEM references of a springs or file model (not "surface", not "fem") on each of `kinds` (options.load is not
+/// used; options.reference is the law, options.control and options.strain the load), on model.mesh with
+/// model.material, for compare_to_references. Check each fem.report.
+/// @throws InvalidArgument for a surface or FEM model, or as compare_calibrated
+std::vector<Reference> fem_references(const calibrate::CalibratedModel& model,
+                                      const std::vector<model::LoadKind>& kinds, const CompareOptions& options);
+
+/// A springs or file model against references made by fem_references on its mesh: one Comparison per reference, the
+/// model's statics as compare_calibrated_cases solves them (options.load_steps; the other fields are not used).
+/// @param starts  optional initial guesses, one per reference (flat positions, m; solve::StaticOptions::start),
+///                e.g. the equilibria of a nearby model; used under displacement control
+/// @throws InvalidArgument for a surface or FEM model, or a count of starts other than the references'
+std::vector<Comparison> compare_to_references(const calibrate::CalibratedModel& model,
+                                              const std::vector<Reference>& references, const CompareOptions& options,
+                                              const std::vector<VecX>& starts = {});
 
 /// compare_calibrated on each of `kinds` (options.load is not used): the FEM references from one factorisation at a
 /// strain, and a spring or FEM-kind model's statics by static_equilibria (one stability test of the rest state and

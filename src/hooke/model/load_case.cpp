@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/core/name_table.hpp>
@@ -11,7 +12,12 @@ namespace hooke::model {
 namespace {
 constexpr NameTable<LoadKind, 3> kLoadKinds{
     "load case", {{{LoadKind::kStretch, "stretch"}, {LoadKind::kCompress, "compress"}, {LoadKind::kShear, "shear"}}}};
+constexpr NameTable<LoadControl, 2> kLoadControls{
+    "load control", {{{LoadControl::kTraction, "traction"}, {LoadControl::kDisplacement, "displacement"}}}};
 }  // namespace
+
+LoadControl load_control_from_name(std::string_view name) { return kLoadControls.from_name(name); }
+std::string_view load_control_name(LoadControl control) { return kLoadControls.name(control); }
 
 LoadKind load_kind_from_name(std::string_view name) { return kLoadKinds.from_name(name); }
 std::string_view load_kind_name(LoadKind kind) { return kLoadKinds.name(kind); }
@@ -51,12 +57,41 @@ LoadCase make_load_case(const mesh::Mesh& mesh, LoadKind kind, double traction_p
   return lc;
 }
 
+LoadCase make_displacement_case(const mesh::Mesh& mesh, LoadKind kind, double displacement, double thickness) {
+  if (!std::isfinite(displacement)) throw InvalidArgument("the displacement must be a finite number of metres");
+  LoadCase lc = make_load_case(mesh, kind, 0.0, thickness);
+  lc.control = LoadControl::kDisplacement;
+  lc.displacement = displacement;
+  lc.nodal_forces.setZero();
+  return lc;
+}
+
 void apply(const LoadCase& load, Problem& problem) {
   if (load.nodal_forces.size() != problem.model->dof_count())
     throw InvalidArgument("load case and problem belong to different meshes");
   fix_nodes(problem, load.fixed_nodes);
   problem.external_force = load.nodal_forces;
+  if (load.control == LoadControl::kDisplacement) {
+    const int d = problem.model->dim();
+    fix_nodes(problem, load.top_nodes);
+    if (problem.prescribed_positions.size() != problem.model->dof_count())
+      problem.prescribed_positions = problem.model->rest_positions();
+    const std::vector<int>& fixed = load.fixed_nodes;
+    for (int node : load.top_nodes)
+      if (!std::binary_search(fixed.begin(), fixed.end(), node))
+        problem.prescribed_positions.segment(d * node, d) += load.displacement * load.direction;
+  }
   zero_fixed_forces(problem);
+}
+
+VecX top_reaction(const LoadCase& load, const Problem& problem, const VecX& positions) {
+  const int d = problem.model->dim();
+  const VecX g = problem.model->gradient(positions, problem.interaction_or_null());
+  VecX sum = VecX::Zero(d);
+  const std::vector<int>& fixed = load.fixed_nodes;
+  for (int node : load.top_nodes)
+    if (!std::binary_search(fixed.begin(), fixed.end(), node)) sum += g.segment(d * node, d);
+  return sum;
 }
 
 double mean_top_displacement(const LoadCase& load, const Problem& problem, const VecX& positions) {

@@ -76,6 +76,24 @@ class StaticObjective final : public NewtonObjective {
   }
   const std::vector<int>& diagonal() const override { return m_assembly.diagonal(); }
 
+  // Moves the fixed DOFs of x by `jump` (zero on the free DOFs) and the free DOFs by the response of the tangent at
+  // x, PSD-projected, to that move: the linear predictor of a step in the prescribed displacements. Where that
+  // tangent cannot be factorised the free DOFs stay.
+  void predict(VecX& x, const VecX& jump) {
+    const auto t0 = Clock::now();
+    m_assembly.assemble(x, true, m_problem.interaction_or_null());
+    VecX rhs = -(m_assembly.matrix() * jump);
+    detail::constrain(m_assembly.matrix(), m_fixed, 1);
+    m_report->assembly_seconds += seconds_since(t0);
+    for (size_t i = 0; i < m_fixed.size(); ++i)
+      if (m_fixed[i]) rhs(static_cast<Eigen::Index>(i)) = 0.0;
+    x += jump;
+    const auto t1 = Clock::now();
+    if (m_predictor.factorize(m_assembly.matrix())) x += m_predictor.solve(rhs);
+    m_report->factorization_seconds += seconds_since(t1);
+    ++m_report->factorizations;
+  }
+
   // The exact tangent restricted to the free DOFs (for the stability test and the smallest eigenvalue).
   SparseMatrix free_tangent(const VecX& z, const model::FreeMap& map) {
     const auto t0 = Clock::now();
@@ -93,6 +111,7 @@ class StaticObjective final : public NewtonObjective {
   SolveReport* m_report = nullptr;
   double m_size = 1.0, m_lambda = 1.0, m_scale = 0.0;
   VecX m_model_gradient;
+  SparseCholesky m_predictor;
 };
 
 // Newton at one load factor from x (updated in place), and the stability test, over one objective; the load and
@@ -115,7 +134,19 @@ struct LoadStepper {
     lambda_stable = 0.0;
   }
 
+  // Under ramp_prescribed: the prescribed displacements of the fixed DOFs (u_c, zero elsewhere) and the rest
+  // positions they are taken from; empty otherwise.
+  VecX ramp, rest;
+
+  // The fixed DOFs' positions at load factor lambda.
+  VecX held_at(double lambda) const { return rest + lambda * ramp; }
+
   bool solve_step(VecX& x, double lambda) {
+    if (ramp.size() > 0) {
+      VecX jump = held_at(lambda) - x;
+      for (const int i : map.free) jump(i) = 0.0;
+      if (jump.lpNorm<Eigen::Infinity>() > 0.0) objective.predict(x, jump);
+    }
     objective.set_load_factor(lambda);
     const NewtonReport r = newton.solve(objective, x, &report->residual_history);
     report->iterations += r.iterations;
@@ -151,7 +182,7 @@ struct LoadStepper {
 
   // Newton at the full load from an initial guess (its free DOFs); accepted when it converges (stably).
   void try_start(const VecX& start, bool check_stability) {
-    VecX x = x_stable;
+    VecX x = ramp.size() > 0 ? held_at(1.0) : x_stable;
     for (const int i : map.free) x(i) = start(i);
     if (x.allFinite() && solve_step(x, 1.0) && (!check_stability || stable_at(x))) accept(std::move(x), 1.0);
   }
@@ -347,7 +378,16 @@ std::vector<StaticResult> static_equilibria(const model::Problem& problem, const
   const model::FreeMap map(model::free_dofs(problem), m.dof_count());
   StaticObjective objective(problem, map);
   LoadStepper newton(objective, map, options.newton);
-  const VecX x0 = model::initial_positions(problem);
+  VecX x0 = model::initial_positions(problem);
+  if (options.ramp_prescribed) {
+    // The held DOFs start at rest and reach their prescribed positions at load factor 1.
+    newton.rest = m.rest_positions();
+    newton.ramp = x0 - newton.rest;
+    for (const int i : map.free) newton.ramp(i) = 0.0;
+    for (int i = 0; i < m.dof_count(); ++i)
+      if (!problem.fixed_dofs[static_cast<size_t>(i)]) newton.ramp(i) = 0.0;
+    x0 = newton.rest;
+  }
   std::vector<StaticResult> out;
   bool start_stable = true;
   for (size_t k = 0; k < loads.size(); ++k) {

@@ -75,6 +75,11 @@ struct StaticOptions {
   /// itself costs one factorisation per accepted step. A solve that fails always estimates it (its message gives it).
   bool estimate_min_eigenvalue = true;
   int bisection_steps = 7;  ///< refinements of the critical load factor, default 7
+  /// Prescribed displacements (problem.prescribed_positions - rest on the fixed DOFs) follow the load factor as the
+  /// forces do: each load step moves the held DOFs to rest + lambda u_c and the free ones by the tangent's response
+  /// to that move (a linear predictor), so that a press or pull of tens of per cent is reached in admissible steps.
+  /// Default false: the prescribed positions hold from the start.
+  bool ramp_prescribed = false;
   /// Optional initial guess at the full load (flat positions, m, size dof_count; prescribed DOFs are taken
   /// from the problem): Newton is tried from it first, and load stepping from rest only if that fails. Empty
   /// (default): load stepping from rest.

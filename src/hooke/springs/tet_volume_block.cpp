@@ -101,8 +101,11 @@ struct TetVolumeBlock::Terms : detail::MeasureTerms<TetShape> {
   using MeasureTerms::MeasureTerms;
 };
 
-TetVolumeBlock::TetVolumeBlock(RowMatXi tets, VecX stiffness, VecX rest_volume)
-    : m_terms(std::make_shared<const Terms>(std::move(tets), std::move(stiffness), std::move(rest_volume), "tet")) {}
+TetVolumeBlock::TetVolumeBlock(RowMatXi tets, VecX stiffness, VecX rest_volume, double exponent)
+    : m_terms(std::make_shared<const Terms>(std::move(tets), std::move(stiffness), std::move(rest_volume), "tet",
+                                            exponent)) {}
+
+double TetVolumeBlock::exponent() const { return m_terms->exponent(); }
 
 double TetVolumeBlock::energy_and_add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
   return m_terms->energy_and_add_gradient(x, gradient);

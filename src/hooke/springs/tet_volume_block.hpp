@@ -20,8 +20,13 @@ class TetVolumeBlock final : public model::TermBlock {
   ///                    springs (any-nu-tet below nu = 1/4: the energy is then concave in V, bounded only by the
   ///                    springs, docs/methods/any_nu.md)
   /// @param rest_volume V0 per tet, m^3, > 0
-  /// @throws InvalidArgument on mismatched sizes, a non-finite k_V or a non-positive V0
-  TetVolumeBlock(RowMatXi tets, VecX stiffness, VecX rest_volume);
+  /// @param exponent    Seth-Hill exponent q of the volume law (docs/methods/large_strain.md), finite: the energy is
+  ///                    k_V g_q(V / V0) with g_q = ((r^q - 1)/q)^2 / 2 (g_0 = (ln r)^2 / 2), the same at small strain
+  ///                    for every q; 1 (default) is the quadratic above, q <= 0 grows without bound as V -> 0 (a
+  ///                    tet cannot be flattened or inverted). Tets with k_V < 0 keep q = 1.
+  /// @throws InvalidArgument on mismatched sizes, a non-finite k_V or exponent, or a non-positive V0
+  TetVolumeBlock(RowMatXi tets, VecX stiffness, VecX rest_volume, double exponent = 1.0);
+  double exponent() const;
 
   std::string_view name() const override { return "tet-volume"; }
   double energy(const Eigen::Ref<const VecX>& x) const override;

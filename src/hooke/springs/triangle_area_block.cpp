@@ -53,9 +53,9 @@ struct TriangleAreaBlock::Terms : detail::MeasureTerms<TriangleShape> {
   using MeasureTerms::MeasureTerms;
 };
 
-TriangleAreaBlock::TriangleAreaBlock(RowMatXi triangles, VecX stiffness, VecX rest_area)
+TriangleAreaBlock::TriangleAreaBlock(RowMatXi triangles, VecX stiffness, VecX rest_area, double exponent)
     : m_terms(std::make_shared<const Terms>(std::move(triangles), std::move(stiffness), std::move(rest_area),
-                                            "triangle")) {}
+                                            "triangle", exponent)) {}
 
 double TriangleAreaBlock::energy_and_add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
   return m_terms->energy_and_add_gradient(x, gradient);

@@ -15,8 +15,9 @@ class TriangleAreaBlock final : public model::TermBlock {
   /// @param triangles  #T x 3 node indices of counter-clockwise triangles (2D positions)
   /// @param stiffness  k_A per triangle, J, finite
   /// @param rest_area  A0 per triangle, m^2, > 0
-  /// @throws InvalidArgument on mismatched sizes, a non-finite k_A or a non-positive A0
-  TriangleAreaBlock(RowMatXi triangles, VecX stiffness, VecX rest_area);
+  /// @param exponent   Seth-Hill exponent q of the area law, as TetVolumeBlock's (1, default: the quadratic above)
+  /// @throws InvalidArgument on mismatched sizes, a non-finite k_A or exponent, or a non-positive A0
+  TriangleAreaBlock(RowMatXi triangles, VecX stiffness, VecX rest_area, double exponent = 1.0);
 
   std::string_view name() const override { return "triangle-area"; }
   double energy(const Eigen::Ref<const VecX>& x) const override;
