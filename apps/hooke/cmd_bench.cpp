@@ -78,8 +78,14 @@ int run_bench(const BenchCli& o) {
   if (o.haptics) return run_haptics(o, options.sizes);
   const experiments::DynamicsBenchmarkReport report = experiments::run_dynamics_benchmark(options);
   const std::string markdown = experiments::dynamics_benchmark_markdown(report);
-  std::printf("hooke bench: tet cylinders, nu = %g, gravity, bottom clamped, the top's centre dragged %g mm\n\n%s",
-              options.poisson, 1e3 * options.drag, markdown.c_str());
+  char load[96];
+  if (options.press > 0.0)
+    std::snprintf(load, sizeof load, "the top pressed %g %% of the height", 100.0 * options.press);
+  else
+    std::snprintf(load, sizeof load, "the top's centre dragged %g mm", 1e3 * options.drag);
+  std::printf(
+      "hooke bench: tet cylinders, nu = %g, spring / volume exponents %g / %g, gravity, bottom clamped, %s\n\n%s",
+      options.poisson, options.spring_exponent, options.volume_exponent, load, markdown.c_str());
   std::printf("\nBullet's soft body at the same dt: build/release/bench/hooke_bench --benchmark_filter=Peer\n");
   if (!o.out_dir.empty()) {
     const std::filesystem::path dir(o.out_dir);
@@ -124,6 +130,15 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--steps", o->options.steps, "Timed steps per integrator")->capture_default_str();
   cmd->add_option("--drag", o->options.drag,
                   "The probe's final offset along x, m (reached at half the run, then held; 0: no probe)")
+      ->capture_default_str();
+  cmd->add_option("--press", o->options.press,
+                  "Instead of the drag, press the whole top down by this fraction of the height (e.g. 0.3)")
+      ->capture_default_str();
+  cmd->add_option("--spring-exponent", o->options.spring_exponent,
+                  "The models' springs: Seth-Hill exponent of the large-strain law (1: Hookean)")
+      ->capture_default_str();
+  cmd->add_option("--volume-exponent", o->options.volume_exponent,
+                  "The models' volume terms: Seth-Hill exponent of the large-strain law (1: quadratic)")
       ->capture_default_str();
   cmd->add_option("--integrators", o->options.integrators,
                   "Only these rows, e.g. quasi-newton,\"local-global (chebyshev)\" (default: all)")

@@ -169,7 +169,7 @@ void BenchmarkDrag::before_step(solve::Simulator& sim, double dt) const {
   if (nodes.empty()) return;
   solve::Probe p;
   p.nodes = nodes;
-  p.offset = Vec3(offset(sim.time() + dt), 0.0, 0.0);
+  p.offset = offset(sim.time() + dt) * direction;
   sim.set_probe(p);
 }
 
@@ -208,16 +208,22 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
   for (int size : options.sizes) {
     bool first_method = true;
     for (const std::string& method : options.methods) {
-      const calibrate::CalibratedModel cm = benchmark_model(size, method, options.poisson);
+      calibrate::CalibratedModel cm = benchmark_model(size, method, options.poisson);
+      cm.springs.spring_exponent = options.spring_exponent;
+      cm.springs.volume_exponent = options.volume_exponent;
       const int nodes = cm.mesh.node_count();
       if (first_method) report.springs.push_back(spring_throughput(cm, triad));
       first_method = false;
       model::Problem problem = model::make_problem(calibrate::build_model(cm).model);
-      model::fix_nodes(problem, model::make_load_case(cm.mesh, model::LoadKind::kStretch, 0.0).fixed_nodes);
+      const model::LoadCase supports = model::make_load_case(cm.mesh, model::LoadKind::kStretch, 0.0);
+      model::fix_nodes(problem, supports.fixed_nodes);
       const solve::Dynamics dynamics{cm.masses, Vec3(0.0, 0.0, -9.81), 0.0, 0.0};
       BenchmarkDrag drag;
-      if (options.drag != 0.0)
-        drag = {benchmark_probe_nodes(cm.mesh), options.drag, 0.5 * (options.steps + 1) * options.dt};
+      const double ramp = 0.5 * (options.steps + 1) * options.dt;
+      if (options.press > 0.0)
+        drag = {supports.top_nodes, options.press * supports.height, ramp, -Vec3::UnitZ()};
+      else if (options.drag != 0.0)
+        drag = {benchmark_probe_nodes(cm.mesh), options.drag, ramp};
       VecX reference;
       for (const Run& run : kRuns) {
         if (!options.integrators.empty() &&

@@ -34,6 +34,12 @@ struct DynamicsBenchmarkOptions {
   /// the probe's final offset along x, m, reached linearly at half the run's simulated time and held (0: no probe),
   /// default 2 mm (a tenth of the height)
   double drag = 2e-3;
+  /// > 0: instead of the drag, the whole top face pressed down by this fraction of the height (its nodes held and
+  /// moved along -z, reached linearly at half the run's simulated time, then held), e.g. 0.3; default 0
+  double press = 0.0;
+  /// the models' large-strain term law (calibrate::SpringModel::spring_exponent, volume_exponent), default Hookean
+  double spring_exponent = 1.0;
+  double volume_exponent = 1.0;
   /// rows to run by name (e.g. "quasi-newton", "local-global (chebyshev)"; empty = all)
   std::vector<std::string> integrators;
 };
@@ -42,9 +48,10 @@ struct DynamicsBenchmarkOptions {
 /// simulated time (the runs use half their simulated time), then held; no probe when `nodes` is empty.
 struct BenchmarkDrag {
   std::vector<int> nodes;
-  double distance = 0.0;  ///< m
-  double ramp_s = 1.0;    ///< s, > 0
-  /// The offset along x at simulated time t (s), m.
+  double distance = 0.0;           ///< m
+  double ramp_s = 1.0;             ///< s, > 0
+  Vec3 direction = Vec3::UnitX();  ///< unit direction of the move: +x for the drag, -z for a press
+  /// The offset along `direction` at simulated time t (s), m.
   double offset(double t) const;
   /// Sets `sim`'s probe to the offset at the end of its next step of dt s (nothing without nodes).
   void before_step(solve::Simulator& sim, double dt) const;

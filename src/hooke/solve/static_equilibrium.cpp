@@ -319,15 +319,28 @@ StaticResult solve_load(LoadStepper& newton, const StaticOptions& options, bool 
                   "not held against rigid motion, or starts in an unstable state");
 
   if (options.start.size() > 0) newton.try_start(options.start, options.check_stability);
+  // A step whose state moved kBranchJump times faster per unit load than the last accepted one has left the path:
+  // past a limit point Newton can land on a far equilibrium of another branch (a snap-through), stable but not the
+  // continuation of the loading. Such a step is refused like a failed one, so the limit point is reported instead.
+  constexpr double kBranchJump = 10.0;
+  double rate = -1.0;  // |x - x_stable| / (lambda - lambda_stable) of the last accepted step
+  bool jumped = false;
   while (lambda_stable < 1.0) {
     const double lambda = std::min(1.0, lambda_stable + step);
     VecX x = x_stable;
-    if (!newton.solve_step(x, lambda)) {
+    bool ok = newton.solve_step(x, lambda);
+    const double step_rate = (x - x_stable).norm() / (lambda - lambda_stable);
+    if (ok && rate > 0.0 && step_rate > kBranchJump * rate) {
+      ok = false;
+      jumped = true;
+    }
+    if (!ok) {
       step *= 0.5;
       if (step < options.min_load_step) {
-        StaticResult r = finish(SolveStatus::kNotConverged, "Newton did not converge beyond load factor " +
-                                                                format_double(lambda_stable) + " (load step below " +
-                                                                format_double(options.min_load_step) + ")");
+        StaticResult r = finish(SolveStatus::kNotConverged,
+                                "Newton did not converge beyond load factor " + format_double(lambda_stable) +
+                                    " (load step below " + format_double(options.min_load_step) + ")" +
+                                    (jumped ? "; beyond it the state jumps to another branch" : ""));
         if (options.check_stability)
           r.report.message += "; the smallest tangent eigenvalue there is " + format_double(r.report.min_eigenvalue) +
                               " N/m (near zero: a limit point, beyond which the body collapses)";
@@ -345,6 +358,7 @@ StaticResult solve_load(LoadStepper& newton, const StaticOptions& options, bool 
                         "stable one, at load factor " +
                         format_double(lo));
     }
+    rate = step_rate;
     newton.accept(std::move(x), lambda);
     step = std::min(step * 1.5, 1.0);
   }
