@@ -64,15 +64,16 @@ int run_calibrate(const CalibrateCli& o) {
     experiments::TermLawFitOptions fo;
     fo.law = law;
     fo.strain_range = o.strain_range;
-    const experiments::TermLawFit fit = experiments::fit_term_law(model, fo);
-    model.springs.spring_exponent = fit.spring_exponent;
-    model.springs.volume_exponent = fit.volume_exponent;
-    model.choice += (model.choice.empty() ? "" : "; ") + fit.summary;
+    // auto (a mesh given, no --model): the any-nu models fitted beside the small-strain pick, the best kept.
+    const bool automatic = o.in.method == "auto" && o.in.model_path.empty() && !model.surface;
+    model = automatic ? experiments::choose_for_range(model, fo) : experiments::with_fitted_law(model, fo);
   } else if (law != material::Law::kLinear) {
     throw InvalidArgument("--law " + o.law + " needs --strain-range (the strain up to which the model follows it)");
   }
   print_model(model);
-  if (o.strain_range > 0.0) std::printf("  term law  %s\n", model.choice.c_str());
+  if (o.strain_range > 0.0)
+    std::printf("  term law  spring exponent %g, volume exponent %g: %s\n", model.springs.spring_exponent,
+                model.springs.volume_exponent, model.choice.c_str());
   if (o.certify && o.strain_range > 0.0) {
     model.certificate = experiments::certify_range(model, law, o.strain_range, o.layers);
     const auto& n = model.mesh.nodes;

@@ -95,7 +95,8 @@ def calibrate(mesh, material, method="auto", density=1000.0, tetrahedralize=None
                     closed surface
     law, strain_range  with strain_range > 0: the springs' and volume terms' large-strain law fitted to the FEM of
                     `law` ("linear", "stvk", "neohookean") up to that strain (.spring_exponent, .volume_exponent;
-                    .choice says what was measured); docs/methods/large_strain.md
+                    .choice says what was measured); with method="auto" the any-nu models are fitted beside the
+                    small-strain pick and the one of least worst error is kept; docs/methods/large_strain.md
     spring_exponent, volume_exponent  the large-strain law given directly (Seth-Hill exponents, 1: Hookean springs
                     and quadratic volume terms)
 
@@ -111,7 +112,7 @@ def calibrate(mesh, material, method="auto", density=1000.0, tetrahedralize=None
     model = _hooke._calibrate(mesh, material, method, float(density), options, float(spring_exponent),
                               float(volume_exponent))
     if strain_range:
-        _hooke._fit_term_law(model, law, float(strain_range))
+        model = _hooke._fit_term_law(model, law, float(strain_range), method == "auto")
     elif law != "linear":
         raise ValueError("calibrate: law=%r needs strain_range (the strain up to which the model follows it)" % law)
     for w in model.warnings:

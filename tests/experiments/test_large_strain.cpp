@@ -119,6 +119,25 @@ TEST(LargeStrain, TwelvePercentCompressionAtNuThreeTenthsHoldsWithTheLargeStrain
   EXPECT_LT(held.relative_l2, 0.15);
 }
 
+// auto over a strain range fits the any-nu models beside the small-strain pick and keeps the least worst error.
+TEST(LargeStrain, AutoOverARangeKeepsTheBestFittedModel) {
+  calibrate::ModelOptions o;
+  const calibrate::CalibratedModel picked =
+      calibrate::calibrate_model(io::read_mesh(HOOKE_MESH_DATA "/cylinder.msh"), {Law::kLinear, 14630.0, 0.45}, o);
+  TermLawFitOptions fo;
+  fo.strain_range = 0.2;
+  const calibrate::CalibratedModel chosen = choose_for_range(picked, fo);
+  EXPECT_NE(chosen.choice.find("stiffness-fit-volume"), std::string::npos) << chosen.choice;
+  EXPECT_NE(chosen.choice.find("any-nu-tet"), std::string::npos) << chosen.choice;
+  const double chosen_error = term_law_error(chosen, fo);
+  for (const char* method : {"stiffness-fit-volume", "any-nu-tet"}) {
+    o.method = method;
+    const calibrate::CalibratedModel other =
+        with_fitted_law(calibrate::calibrate_model(picked.mesh, picked.material, o), fo);
+    EXPECT_LE(chosen_error, term_law_error(other, fo) + 1e-9) << method;
+  }
+}
+
 TEST(LargeStrain, TheFitRefusesWhatItCannotFit) {
   TermLawFitOptions fo;
   fo.strain_range = 0.7;

@@ -38,28 +38,15 @@ void define_certify(py::module_& m) {
       "model.certificate (written with the model).");
   m.def(
       "_fit_term_law",
-      [](calibrate::CalibratedModel& model, const std::string& law, double strain_range) {
+      [](const calibrate::CalibratedModel& model, const std::string& law, double strain_range, bool automatic) {
         experiments::TermLawFitOptions o;
         o.law = material::law_from_name(law);
         o.strain_range = strain_range;
-        experiments::TermLawFit fit;
-        {
-          py::gil_scoped_release release;
-          fit = experiments::fit_term_law(model, o);
-        }
-        model.springs.spring_exponent = fit.spring_exponent;
-        model.springs.volume_exponent = fit.volume_exponent;
-        model.choice += (model.choice.empty() ? "" : "; ") + fit.summary;
-        py::dict d;
-        d["spring_exponent"] = fit.spring_exponent;
-        d["volume_exponent"] = fit.volume_exponent;
-        d["worst_error"] = fit.worst_error;
-        d["hookean_error"] = fit.hookean_error;
-        d["evaluations"] = fit.evaluations;
-        d["summary"] = fit.summary;
-        return d;
+        py::gil_scoped_release release;
+        return automatic && !model.surface ? experiments::choose_for_range(model, o)
+                                           : experiments::with_fitted_law(model, o);
       },
-      py::arg("model"), py::arg("law"), py::arg("strain_range"));
+      py::arg("model"), py::arg("law"), py::arg("strain_range"), py::arg("automatic"));
 }
 
 }  // namespace hooke::python

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <hooke/calibrate/model_factory.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/compare.hpp>
 #include <hooke/experiments/term_law_fit.hpp>
@@ -124,6 +125,58 @@ TermLawFit fit_term_law(const calibrate::CalibratedModel& model, const TermLawFi
                 fit.evaluations);
   fit.summary = line;
   return fit;
+}
+
+calibrate::CalibratedModel with_fitted_law(calibrate::CalibratedModel model, const TermLawFitOptions& options) {
+  const TermLawFit fit = fit_term_law(model, options);
+  model.springs.spring_exponent = fit.spring_exponent;
+  model.springs.volume_exponent = fit.volume_exponent;
+  model.choice += (model.choice.empty() ? "" : "; ") + fit.summary;
+  return model;
+}
+
+calibrate::CalibratedModel choose_for_range(const calibrate::CalibratedModel& picked,
+                                            const TermLawFitOptions& options) {
+  std::vector<std::string> methods{picked.method};
+  const std::vector<std::string> any_nu = picked.mesh.kind == mesh::ElementKind::kTet
+                                              ? std::vector<std::string>{"stiffness-fit-volume", "any-nu-tet"}
+                                              : std::vector<std::string>{"any-nu-triangle"};
+  for (const std::string& m : any_nu)
+    if (std::find(methods.begin(), methods.end(), m) == methods.end()) methods.push_back(m);
+  calibrate::CalibratedModel best;
+  double best_error = kInfinity;
+  std::string measured;
+  for (const std::string& method : methods) {
+    calibrate::CalibratedModel candidate = picked;
+    if (method != picked.method) {
+      calibrate::ModelOptions mo;
+      mo.method = method;
+      mo.density = picked.density;
+      candidate = calibrate::calibrate_model(picked.mesh, picked.material, mo);
+      candidate.meshing = picked.meshing;
+    }
+    const TermLawFit fit = fit_term_law(candidate, options);
+    char line[160];
+    std::snprintf(line, sizeof line, "%s%s %.3g (Hookean %.3g, m %.4g, q %.4g)", measured.empty() ? "" : ", ",
+                  method.c_str(), fit.worst_error, fit.hookean_error, fit.spring_exponent, fit.volume_exponent);
+    measured += line;
+    if (fit.worst_error < best_error) {
+      best_error = fit.worst_error;
+      best = std::move(candidate);
+      best.springs.spring_exponent = fit.spring_exponent;
+      best.springs.volume_exponent = fit.volume_exponent;
+    }
+  }
+  if (!(best_error < kInfinity))
+    throw SolverFailure("no candidate model has a stable equilibrium on every case up to " +
+                        std::to_string(options.strain_range) + " strain: " + measured);
+  char head[200];
+  std::snprintf(head, sizeof head,
+                "auto over a strain range: the smallest worst case (relative L2 and force error, displacement-"
+                "controlled, against the %s FEM at %.3g and %.3g strain) after each model's term law was fitted: ",
+                std::string(material::law_name(options.law)).c_str(), 0.5 * options.strain_range, options.strain_range);
+  best.choice = head + measured + "; small-strain pick: " + picked.choice;
+  return best;
 }
 
 }  // namespace hooke::experiments

@@ -42,4 +42,15 @@ double term_law_error(const calibrate::CalibratedModel& model, const TermLawFitO
 ///   SolverFailure when the FEM has no stable equilibrium on a case (the law cannot reach that strain)
 TermLawFit fit_term_law(const calibrate::CalibratedModel& model, const TermLawFitOptions& options);
 
+/// fit_term_law applied: `model` with the fitted exponents, and its choice text extended by the fit's summary.
+calibrate::CalibratedModel with_fitted_law(calibrate::CalibratedModel model, const TermLawFitOptions& options);
+
+/// `--method auto` over a strain range. `picked` is the small-strain pick (calibrate::calibrate_model with "auto", on a
+/// tet or triangle mesh); the any-nu models of its element kind (any-nu-tet and stiffness-fit-volume for tets,
+/// any-nu-triangle for triangles) are calibrated beside it on its mesh and material (linear, same density), each one's
+/// law is fitted, and the model of least worst error is returned, its choice text naming every candidate's fitted and
+/// Hookean worst errors.
+/// @throws as fit_term_law
+calibrate::CalibratedModel choose_for_range(const calibrate::CalibratedModel& picked, const TermLawFitOptions& options);
+
 }  // namespace hooke::experiments
