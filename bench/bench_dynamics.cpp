@@ -43,6 +43,26 @@ void BM_SpringForces(benchmark::State& state) {
                                                            benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// One energy-and-gradient pass of the 1 089-node any-nu-tet model (springs, volume terms, orientation guard) under
+// the large-strain term laws (docs/methods/large_strain.md): Hookean / quadratic (1, 1), log springs with barrier
+// volumes (0, -2), and a law off the integer grid (0.125, -1.5), at a 5 % compression-like state.
+void BM_TermLawForces(benchmark::State& state) {
+  static const calibrate::CalibratedModel base = experiments::benchmark_model(0, "any-nu-tet", 0.45);
+  calibrate::CalibratedModel cm = base;
+  cm.springs.spring_exponent = static_cast<double>(state.range(0)) / 8.0;
+  cm.springs.volume_exponent = static_cast<double>(state.range(1)) / 8.0;
+  const auto model = calibrate::build_model(cm).model;
+  VecX x = model->rest_positions();
+  for (Eigen::Index i = 2; i < x.size(); i += 3) x(i) *= 0.95;
+  VecX g = VecX::Zero(x.size());
+  for (auto _ : state) {
+    g.setZero();
+    benchmark::DoNotOptimize(model->energy_and_gradient(x, g));
+  }
+  state.SetLabel("m " + std::to_string(cm.springs.spring_exponent) + ", q " +
+                 std::to_string(cm.springs.volume_exponent));
+}
+
 void BM_Step(benchmark::State& state) {
   Cylinder& c = bench::cached<Cylinder>(static_cast<int>(state.range(0)));
   const auto integrator = static_cast<solve::Integrator>(state.range(1));
@@ -63,6 +83,7 @@ void BM_Step(benchmark::State& state) {
 
 BENCHMARK(BM_DynTriad)->Unit(benchmark::kMillisecond)->Iterations(5);
 BENCHMARK(BM_SpringForces)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_TermLawForces)->Args({8, 8})->Args({0, -16})->Args({1, -12})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Step)
     ->ArgsProduct({{0, 1}, {0, 1, 2, 3, 4, 5}})
     ->Args({2, 0})

@@ -50,6 +50,15 @@ TEST(SethHill, TheScalarLawMatchesItsFiniteDifferencesAndIsHookeanAtRest) {
   EXPECT_TRUE(std::isinf(detail::seth_hill_energy(0.0, 0.5).value));
 }
 
+// The fast powers of the fitted laws' exponents (multiples of 1/8) against std::pow.
+TEST(SethHill, RatioPowerIsStdPow) {
+  for (double q = -8.0; q <= 8.0; q += 0.125)
+    for (double r : {0.05, 0.4, 0.99, 1.0, 1.7, 6.0})
+      EXPECT_NEAR(detail::ratio_power(r, q), std::pow(r, q), 1e-14 * std::pow(r, q)) << r << "^" << q;
+  EXPECT_NEAR(detail::ratio_power(1.3, 0.3), std::pow(1.3, 0.3), 1e-15);
+  EXPECT_EQ(detail::integer_power(2.0, -3), 0.125);
+}
+
 TEST(SethHill, SingleSpringFunctionsAgreeWithTheBlockAndWithHookeAtRest) {
   const Vec3 pi(0.01, 0.02, -0.01), pj(-0.005, 0.0, 0.004);
   for (double m : {-1.0, 0.0, 0.5}) {

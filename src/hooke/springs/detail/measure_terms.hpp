@@ -71,33 +71,36 @@ class MeasureTerms {
 
   // energy() and add_gradient() in one pass, to round-off (k / m0^2 kept per element: no division per element).
   double energy_and_add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
-    if (m_exponent != 1.0)
-      return m_schedule.sum_chunks([&](std::span<const int> elements) {
-        double sum = 0.0;
-        for (int e : elements) {
-          const Corners p = corners(x, e);
-          const double m0 = m_rest(e);
-          const SethHillEnergy g = seth_hill_energy(Shape::measure(p) / m0, law(e));
-          sum += m_stiffness(e) * g.value;
-          const Corners grad = (m_stiffness(e) * g.first / m0) * Shape::gradient(p);
-          for (int a = 0; a < N; ++a) gradient.template segment<D>(D * m_elements(e, a)) += grad.col(a);
-        }
-        return sum;
-      });
-    return m_schedule.sum_chunks([&](std::span<const int> elements) {
+    // Per element: the energy and dE/dm at the measure m, for the quadratic term or the Seth-Hill law.
+    const auto quadratic = [&](int e) {
+      return [&, e](double m) {
+        const double c = m - m_rest(e);
+        return std::pair{0.5 * m_scale(e) * c * c, m_scale(e) * c};
+      };
+    };
+    const auto seth_hill = [&](int e) {
+      return [&, e](double m) {
+        const SethHillEnergy g = seth_hill_energy(m / m_rest(e), law(e));
+        return std::pair{m_stiffness(e) * g.value, m_stiffness(e) * g.first / m_rest(e)};
+      };
+    };
+    const auto pass = [&](std::span<const int> elements, const auto& law_of) {
       double sum = 0.0;
       for (int e : elements) {
-        if constexpr (requires { Shape::add_energy_and_gradient(x.data(), &m_elements(e, 0), 0.0, 0.0, nullptr); }) {
-          sum += Shape::add_energy_and_gradient(x.data(), &m_elements(e, 0), m_rest(e), m_scale(e), gradient.data());
+        if constexpr (requires { Shape::add_energy_and_gradient(x.data(), &m_elements(e, 0), law_of(e), nullptr); }) {
+          sum += Shape::add_energy_and_gradient(x.data(), &m_elements(e, 0), law_of(e), gradient.data());
         } else {
           const Corners p = corners(x, e);
-          const double c = Shape::measure(p) - m_rest(e), scale = m_scale(e);
-          sum += 0.5 * scale * c * c;
-          const Corners g = (scale * c) * Shape::gradient(p);
+          const auto [energy, slope] = law_of(e)(Shape::measure(p));
+          sum += energy;
+          const Corners g = slope * Shape::gradient(p);
           for (int a = 0; a < N; ++a) gradient.template segment<D>(D * m_elements(e, a)) += g.col(a);
         }
       }
       return sum;
+    };
+    return m_schedule.sum_chunks([&](std::span<const int> elements) {
+      return m_exponent == 1.0 ? pass(elements, quadratic) : pass(elements, seth_hill);
     });
   }
 
