@@ -97,8 +97,10 @@ int run_identify(const IdentifyCli& o) {
       material.youngs_modulus, material.poisson_ratio,
       o.reference.front() == "fem" ? (std::string(material::law_name(material.law)) + " FEM").c_str() : "files");
   const auto cases = reference_cases(o, mesh, material);
+  // FEM references of a nonlinear law: the start is the analytic model with its term law fitted up to that strain.
+  const double strain_range = o.reference.front() == "fem" ? o.loads.strain : 0.0;
   const experiments::IdentificationStudy study =
-      experiments::identification_study(mesh, material, cases, options, analytic);
+      experiments::identification_study(mesh, material, cases, options, analytic, strain_range);
   print_study(study, options);
   const calibrate::CalibratedModel model = experiments::identified_model(mesh, material, o.density, study, options);
 

@@ -87,6 +87,24 @@ TEST(ForceBasis, EqualsTheBlocksGradientForEveryParameterKind) {
   }
 }
 
+// The same for the large-strain term laws (docs/methods/large_strain.md): U(x) theta is still the model's gradient,
+// the columns those of the layout's law, at a state stretched and compressed by 10 % of the edges.
+TEST(ForceBasis, EqualsTheBlocksGradientForALargeStrainLaw) {
+  const mesh::Mesh mesh = test::irregular_mesh(mesh::ElementKind::kTet, 2, 0.2);
+  identify::ParameterLayout layout = identify::parameter_layout(mesh, Parameters::kSpringsVolume);
+  layout.spring_exponent = 0.125;
+  layout.volume_exponent = -1.5;
+  const VecX theta = random_parameters(layout, 3, 40.0, 2e-3);
+  const VecX x = perturbed(mesh, 2e-2, 5);
+  VecX forces(x.size());
+  identify::ForceBasis(layout, x).apply(theta, forces);
+  const calibrate::SpringModel springs = identify::spring_model(layout, theta);
+  EXPECT_EQ(springs.spring_exponent, 0.125);
+  EXPECT_EQ(springs.volume_exponent, -1.5);
+  const VecX expected = calibrate::make_model(mesh, springs)->gradient(x);
+  EXPECT_LT((forces - expected).norm(), 1e-12 * expected.norm());
+}
+
 TEST(ForceBasis, TransposeIsTheAdjointOfApplyOnTheMaskedRows) {
   const mesh::Mesh mesh = test::irregular_mesh(mesh::ElementKind::kTet, 2, 0.2);
   const identify::ParameterLayout layout = identify::parameter_layout(mesh, Parameters::kSpringsVolumeRestLength);

@@ -60,7 +60,9 @@ void define_identify(py::module_& m) {
           loads.seed = seed;
           cases = experiments::fem_reference_cases(mesh, material, loads);
         }
-        const auto study = experiments::identification_study(mesh, material, cases, options, analytic);
+        // FEM references of a nonlinear law: the start is the analytic model with its term law fitted up to `strain`.
+        const auto study = experiments::identification_study(mesh, material, cases, options, analytic,
+                                                             references.is_none() ? strain : 0.0);
         return std::make_pair(experiments::identified_model(mesh, material, density, study, options),
                               experiments::identification_report_json(study, options));
       },

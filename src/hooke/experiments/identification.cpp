@@ -2,9 +2,11 @@
 #include <chrono>
 #include <cmath>
 #include <hooke/calibrate/method.hpp>
+#include <hooke/calibrate/model_factory.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/sparse_cholesky.hpp>
 #include <hooke/experiments/identification.hpp>
+#include <hooke/experiments/term_law_fit.hpp>
 #include <hooke/fem/elastic_block.hpp>
 #include <hooke/identify/positions_objective.hpp>
 #include <hooke/mesh/measure.hpp>
@@ -179,10 +181,21 @@ std::vector<identify::ReferenceCase> fem_reference_cases(const mesh::Mesh& mesh,
 
 IdentificationStudy identification_study(const mesh::Mesh& mesh, const material::Material& material,
                                          const std::vector<identify::ReferenceCase>& cases,
-                                         const identify::IdentifyOptions& options, const std::string& analytic_method) {
+                                         const identify::IdentifyOptions& options, const std::string& analytic_method,
+                                         double strain_range) {
   IdentificationStudy s;
-  const calibrate::SpringModel analytic =
+  calibrate::SpringModel analytic =
       calibrate::calibrate(mesh, {material}, calibrate::method_from_name(analytic_method));
+  if (strain_range > 0.0 && material.law != material::Law::kLinear) {
+    calibrate::ModelOptions mo;
+    mo.method = analytic_method;
+    material::Material linear = material;
+    linear.law = material::Law::kLinear;
+    TermLawFitOptions fo;
+    fo.law = material.law;
+    fo.strain_range = strain_range;
+    analytic = with_fitted_law(calibrate::calibrate_model(mesh, linear, mo), fo).springs;
+  }
   identify::IdentifyOptions with_start = options;
   if (!with_start.start_model) with_start.start_model = analytic;
   s.identification = identify::identify(mesh, cases, with_start);
@@ -192,8 +205,10 @@ IdentificationStudy identification_study(const mesh::Mesh& mesh, const material:
   s.analytic_errors = identify::position_errors(mesh, analytic, cases, options.statics);
   std::vector<identify::ReferenceCase> training;
   for (const identify::ReferenceCase* c : identify::training_cases(cases)) training.push_back(*c);
-  const identify::ParameterLayout layout = identify::parameter_layout(
+  identify::ParameterLayout layout = identify::parameter_layout(
       mesh, analytic.volume_tets.rows() ? identify::Parameters::kSpringsVolume : identify::Parameters::kSprings);
+  layout.spring_exponent = analytic.spring_exponent;
+  layout.volume_exponent = analytic.volume_exponent;
   s.analytic_force_residual = identify::force_residual(layout, identify::parameters_of(layout, analytic), training);
   s.evaluation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   for (const auto& c : cases) {

@@ -71,10 +71,15 @@ struct IdentificationStudy {
 /// Identifies a model from `cases` and measures it and the analytic `analytic_method` model (calibrated from
 /// `material`) on every case by static equilibrium (Newton). The analytic model is Eq. 1's second start
 /// (IdentifyOptions::start_model) unless the options name one.
+/// @param strain_range  > 0 with a nonlinear material.law: the analytic model is the large-strain one, its term law
+///                      fitted to that law up to this strain (experiments::fit_term_law), so that a start exists at
+///                      strains where Hookean springs have no stable equilibrium; the identified model keeps its law.
+///                      0 (default): the analytic model's Hookean springs
 /// @throws InvalidArgument for an unknown method or bad cases; SolverFailure from identify()
 IdentificationStudy identification_study(const mesh::Mesh& mesh, const material::Material& material,
                                          const std::vector<identify::ReferenceCase>& cases,
-                                         const identify::IdentifyOptions& options, const std::string& analytic_method);
+                                         const identify::IdentifyOptions& options, const std::string& analytic_method,
+                                         double strain_range = 0.0);
 
 /// The identified model as a model file's contents (method "identified", its equation naming the objective, the
 /// parameters and the number of cases), with lumped masses of `density` (kg/m^3) and the analytic model's errors

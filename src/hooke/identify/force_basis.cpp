@@ -1,4 +1,5 @@
 #include <hooke/identify/force_basis.hpp>
+#include <hooke/springs/detail/seth_hill.hpp>
 #include <hooke/springs/tet_volume_block.hpp>
 
 namespace hooke::identify {
@@ -13,7 +14,11 @@ ForceBasis::ForceBasis(const ParameterLayout& layout, const Eigen::Ref<const Vec
     const VecX edge = positions.segment(d * j, d) - positions.segment(d * i, d);
     const double l = edge.norm();
     const VecX u = l > 0.0 ? VecX(edge / l) : VecX::Zero(d);
-    m_stretch.row(s) = (l - layout.rest_length(s)) * u.transpose();
+    const double l0 = layout.rest_length(s);
+    m_stretch.row(s) =
+        (layout.spring_exponent == 1.0 ? l - l0
+                                       : l0 * springs::detail::seth_hill_energy(l / l0, layout.spring_exponent).first) *
+        u.transpose();
     if (layout.offset_count()) m_direction.row(s) = u.transpose();
   }
   m_volume.resize(nt, 12);
@@ -22,7 +27,10 @@ ForceBasis::ForceBasis(const ParameterLayout& layout, const Eigen::Ref<const Vec
     for (int a = 0; a < 4; ++a) p.col(a) = positions.segment<3>(3 * layout.tets(t, a));
     const double v0 = layout.rest_volume(t);
     const double v = (p.col(1) - p.col(0)).dot((p.col(2) - p.col(0)).cross(p.col(3) - p.col(0))) / 6.0;
-    const Eigen::Matrix<double, 3, 4> g = (v - v0) / (v0 * v0) * springs::tet_volume_gradient(p);
+    const double slope = layout.volume_exponent == 1.0
+                             ? (v - v0) / (v0 * v0)
+                             : springs::detail::seth_hill_energy(v / v0, layout.volume_exponent).first / v0;
+    const Eigen::Matrix<double, 3, 4> g = slope * springs::tet_volume_gradient(p);
     m_volume.row(t) = Eigen::Map<const Eigen::Matrix<double, 1, 12>>(g.data());
   }
 }

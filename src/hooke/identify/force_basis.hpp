@@ -21,7 +21,8 @@ class ForceBasis {
   void add_squared_column_norms(const std::vector<char>& row_mask, Eigen::Ref<VecX> out) const;
 
   /// The column blocks: per spring (l - l0) u and u (the latter only with offsets), #S x dim; per tet the four
-  /// corners' (V - V0)/V0^2 dV/dx_a, #T x 12 (empty without volume terms).
+  /// corners' (V - V0)/V0^2 dV/dx_a, #T x 12 (empty without volume terms); for a layout's term law the columns of
+  /// that law (ParameterLayout::spring_exponent, volume_exponent).
   const RowMatX& stretch() const { return m_stretch; }
   const RowMatX& direction() const { return m_direction; }
   const RowMatX& volume() const { return m_volume; }

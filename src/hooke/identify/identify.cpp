@@ -308,6 +308,20 @@ Identification identify(const mesh::Mesh& mesh, const std::vector<ReferenceCase>
   Identification out;
   out.layout = parameter_layout(mesh, options.parameters);
   out.layout.negative_volume = options.negative_volume;
+  if (options.start_model) {  // the start's term law: the identified constants are of the same law
+    out.layout.spring_exponent = options.start_model->spring_exponent;
+    out.layout.volume_exponent = options.start_model->volume_exponent;
+    if (out.layout.spring_exponent != 1.0 && rest_lengths)
+      throw InvalidArgument(
+          "identification: rest lengths are fitted for Hookean springs only (the start model's "
+          "springs have the large-strain law m = " +
+          std::to_string(out.layout.spring_exponent) + ")");
+    if (out.layout.volume_exponent != 1.0 && options.negative_volume)
+      throw InvalidArgument(
+          "identification: negative volume terms keep the quadratic law; the start model's law "
+          "has q = " +
+          std::to_string(out.layout.volume_exponent));
+  }
   out.theta = fit_forces_with_floor(out.layout, training, options, out.report.least_squares);
   if (rest_lengths) {  // fold the offsets into rest lengths, then refit k and k_V with them
     const calibrate::SpringModel fitted = spring_model(out.layout, out.theta, &out.report.clamped_rest_lengths);

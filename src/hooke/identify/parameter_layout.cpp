@@ -56,6 +56,8 @@ calibrate::SpringModel spring_model(const ParameterLayout& layout, const VecX& t
   const int ns = layout.spring_count(), nt = layout.volume_count();
   calibrate::SpringModel out;
   out.dim = layout.dim;
+  out.spring_exponent = layout.spring_exponent;
+  out.volume_exponent = layout.volume_exponent;
   out.pairs = layout.pairs;
   out.stiffness = theta.head(ns).cwiseMax(0.0);
   out.rest_length = layout.rest_length;

@@ -34,6 +34,11 @@ struct ParameterLayout {
   /// k_V may be negative. A spring network alone has Poisson's ratio 1/4 (Cauchy's relation lambda = mu), so below
   /// nu = 1/4 the volume terms must take stiffness away (docs/methods/any_nu.md); default false (k_V >= 0)
   bool negative_volume = false;
+  /// The term law every k and k_V column is of (calibrate::SpringModel::spring_exponent, volume_exponent;
+  /// docs/methods/large_strain.md): spring s adds k l0 g_m'(l / l0) u, tet t adds k_V g_q'(V / V0) / V0 dV/dx, linear
+  /// in theta for every law. Default 1 (the Hookean columns above); offsets need m = 1, a law q != 1 needs k_V >= 0.
+  double spring_exponent = 1.0;
+  double volume_exponent = 1.0;
 
   int spring_count() const { return static_cast<int>(pairs.size()); }
   int volume_count() const { return static_cast<int>(tets.rows()); }
