@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fails when a file in src/hooke/<layer>/ includes a header of a layer above it (STYLE.md layer order)."""
+"""Fails when a file in src/hooke/<layer>/ includes a header of a layer above it (the layer order of docs/architecture.md)."""
 import pathlib
 import re
 import sys
@@ -14,7 +14,7 @@ bad = []
 for path in sorted(root.rglob("*.[ch]pp")):
     layer = path.relative_to(root).parts[0]
     if layer not in ORDER:
-        bad.append(f"{path}: folder '{layer}' is not a layer of STYLE.md")
+        bad.append(f"{path}: folder '{layer}' is not a layer of docs/architecture.md")
         continue
     for n, line in enumerate(path.read_text().splitlines(), 1):
         m = re.match(r'\s*#include\s*<hooke/([a-z_]+)/', line)

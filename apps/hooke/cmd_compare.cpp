@@ -86,7 +86,7 @@ int run_compare(const CompareCli& o) {
   if (std::isnan(o.traction) == std::isnan(o.strain))
     throw InvalidArgument("give exactly one of --traction and --strain");
   if (!std::isnan(o.strain) && !(o.strain > 0.0)) throw InvalidArgument("--strain must be > 0");
-  // Outputs as one transaction (issue 16): the folder is checked and staged before the work, and nothing reaches it
+  // Outputs as one transaction: the folder is checked and staged before the work, and nothing reaches it
   // unless everything, the figure included, was written.
   OutputTransaction outputs;
   const std::filesystem::path staging = o.out_dir.empty() ? std::filesystem::path() : outputs.stage_folder(o.out_dir);

@@ -100,7 +100,7 @@ Action add_reproduce_command(CLI::App& app) {
     if (o->out_dir.empty()) o->out_dir = "out/" + o->paper;
     if (o->paper != "lloyd2007" && o->paper != "arnab2008" && o->paper != "nu-range")
       throw InvalidArgument("unknown paper '" + o->paper + "' (available: lloyd2007, arnab2008, nu-range)");
-    // One transaction (issue 16): report and figures are written into a staging folder and moved into place with the
+    // One transaction: report and figures are written into a staging folder and moved into place with the
     // report (.md) last, so a run killed at any instant leaves the previous report whole, with its figures.
     if (!o->scheduler.empty() && o->paper != "nu-range")
       throw InvalidArgument("--scheduler runs the nu-range study only; " + o->paper + " runs here");

@@ -1,5 +1,5 @@
 #pragma once
-// One define_<concept>(module) per binding file (STYLE.md: python/src mirrors src/hooke), called from bindings.cpp.
+// One define_<concept>(module) per binding file (python/src mirrors src/hooke, docs/architecture.md), called from bindings.cpp.
 #include <pybind11/pybind11.h>
 
 namespace hooke::python {

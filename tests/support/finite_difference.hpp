@@ -1,5 +1,5 @@
 #pragma once
-// Central finite differences, the independent check of every gradient and Hessian (STYLE.md, Tests).
+// Central finite differences, the independent check of every gradient and Hessian (docs/architecture.md, independent checks).
 #include <functional>
 #include <hooke/core/types.hpp>
 

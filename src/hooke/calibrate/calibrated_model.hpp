@@ -1,7 +1,7 @@
 #pragma once
 /// A calibrated model as plain data: what `hooke calibrate` writes and `--model` reads back (docs/model_format.md).
 /// It holds everything the term blocks are built from, so that a model made here, in another program or by hand
-/// runs in every solver and comparison (DESIGN.md: "the model is data").
+/// runs in every solver and comparison (docs/architecture.md: the model is data).
 #include <functional>
 #include <hooke/calibrate/spring_model.hpp>
 #include <hooke/material/material.hpp>

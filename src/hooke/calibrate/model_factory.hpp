@@ -1,6 +1,6 @@
 #pragma once
 /// The one model factory: every front end (CLI, Python, viewer) gets its model from here, by method name or
-/// from a model file, and never chooses term blocks itself (DESIGN.md).
+/// from a model file, and never chooses term blocks itself (docs/architecture.md).
 #include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/mesh/tetrahedralize.hpp>

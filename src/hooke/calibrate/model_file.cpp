@@ -426,7 +426,7 @@ void write_model(const std::filesystem::path& path, const CalibratedModel& m) {
     const int d = m.mesh.dim();
     VecX node_mass(m.mesh.node_count());
     for (int i = 0; i < m.mesh.node_count(); ++i) node_mass(i) = m.masses(d * i);
-    OutputTransaction outputs;  // both files or neither, the springs last (issue 16)
+    OutputTransaction outputs;  // both files or neither, the springs last
     io::write_vtu(outputs.stage_file(path.parent_path() / (path.stem().string() + "_elements.vtu")), m.mesh,
                   {{"mass", 1, node_mass}});
     io::write_vtu_lines(outputs.stage_file(path), m.mesh.nodes, s.pairs, {{"mass", 1, node_mass}},
@@ -451,7 +451,7 @@ CalibratedModel parse_model(const std::string& text, const std::string& source) 
     std::string what = e.what();
     if (const auto p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
     throw ParseError(source, line, "not valid JSON (" + what + ")");
-  } catch (const json::exception& e) {  // e.g. a number beyond double's range (found by fuzzing, issue 16)
+  } catch (const json::exception& e) {  // e.g. a number beyond double's range (found by fuzzing)
     throw ParseError::at_entry(source, "(JSON)", std::string("not valid JSON (") + e.what() + ")");
   }
   try {

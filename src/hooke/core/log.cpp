@@ -12,7 +12,7 @@ void default_sink(LogLevel level, std::string_view message) {
   std::fprintf(stderr, "hooke: %s: %.*s\n", tag, static_cast<int>(message.size()), message.data());
 }
 
-// The one piece of process-wide state: the log sink (STYLE.md, "one replaceable sink").
+// The one piece of process-wide state: the log sink (one replaceable sink).
 LogSink& sink() {
   static LogSink current = default_sink;
   return current;

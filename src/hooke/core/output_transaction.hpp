@@ -1,5 +1,5 @@
 #pragma once
-/// A command's outputs written as one transaction (issue 16): everything goes to staging names first and is moved
+/// A command's outputs written as one transaction: everything goes to staging names first and is moved
 /// into place by commit(), the index file (a report, a .pvd) last. A command that fails before commit() leaves the
 /// previous outputs untouched and no staging files behind (the destructor removes them, and the output folder when
 /// this transaction created it and it is still empty).

@@ -57,7 +57,7 @@ class PhysicsLoop {
  public:
   /// Takes over `simulation`; the thread starts with start(). realtime = false steps as fast as it can (for
   /// scripted runs where wall time does not matter). `threads`: OpenMP threads of the physics (>= 1; default 1:
-  /// measured on the 2-core machine, one thread steps the 1 089-node cylinder with local/global in 0.41 ms where two
+  /// measured on two cores, one thread steps the 1 089-node cylinder with local/global in 0.41 ms where two
   /// take 0.41 ms when they may spin and 0.85 ms when they must sleep, and the drawing needs the other core).
   explicit PhysicsLoop(LiveSimulation simulation, bool realtime = true, int threads = 1);
   ~PhysicsLoop();  ///< stops the thread

@@ -16,7 +16,7 @@ mesh::Mesh read_off(const std::filesystem::path& path) {
   r.integer("the edge count", '#');
   if (nv < 0 || nf < 0) r.fail("negative counts");
   // A vertex takes at least 6 bytes ("0 0 0\n"), a face at least 8 ("3 0 1 2\n"): counts that cannot fit in the
-  // file are refused before anything is allocated for them (issue 16 item 3).
+  // file are refused before anything is allocated for them.
   r.bounded_count(static_cast<std::uint64_t>(nv), 6, "the vertex count");
   r.bounded_count(static_cast<std::uint64_t>(nf), 8, "the face count");
   RowMatX nodes(nv, 3);

@@ -129,7 +129,7 @@ mesh::Mesh read_tetgen(const std::filesystem::path& path) {
 
 void write_tetgen(const std::filesystem::path& target, const mesh::Mesh& m) {
   if (m.kind == mesh::ElementKind::kQuad) throw InvalidArgument("TetGen files hold tets or triangles, not quads");
-  // The .node, .face and .ele files as one transaction (issue 16): all staged under one stem, then renamed with the
+  // The .node, .face and .ele files as one transaction: all staged under one stem, then renamed with the
   // .ele (what a reader opens) last; a failure leaves the previous files untouched.
   OutputTransaction outputs;
   for (const char* ext : {".node", ".face"}) outputs.stage_file(with_ext(target, ext));

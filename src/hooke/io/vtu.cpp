@@ -56,7 +56,7 @@ std::map<std::string, std::string> attributes(const std::string& tag) {
 }
 
 // `value` from the file as a whole number in [lo, hi]; a ParseError naming `what` otherwise (casting an out-of-range
-// double to an integer is undefined behaviour, issue 16 item 4).
+// double to an integer is undefined behaviour).
 // The error names the line of the array's <DataArray> tag (`at`).
 double whole_number(const detail::Reader& r, size_t at, double value, double lo, double hi, const std::string& what) {
   if (!(value >= lo && value <= hi) || value != std::floor(value)) {
@@ -185,7 +185,7 @@ VtuContents read_vtu(const std::filesystem::path& path) {
         if (ec != std::errc() || parsed != c.data() + c.size() || a.components < 1 || a.components > 9)
           r.fail_at_offset(pos, "DataArray '" + a.name + "' has NumberOfComponents=\"" + c + "\" (1 to 9 expected)");
       }
-      r.window(close + 1, end);  // the array's text, read in place (a copy per array was quadratic, issue 16)
+      r.window(close + 1, end);  // the array's text, read in place (a copy per array was quadratic)
       while (true) {
         r.skip_space();
         if (r.at_end()) break;

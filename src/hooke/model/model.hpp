@@ -1,5 +1,5 @@
 #pragma once
-/// A model: rest positions plus a few term blocks (DESIGN.md: "the model is data").
+/// A model: rest positions plus a few term blocks (docs/architecture.md: the model is data).
 #include <hooke/core/types.hpp>
 #include <hooke/model/term_block.hpp>
 #include <memory>

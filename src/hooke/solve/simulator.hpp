@@ -1,5 +1,5 @@
 #pragma once
-/// Dynamics of any model: masses, gravity, Rayleigh damping, and a time integrator (DESIGN.md: one simulation
+/// Dynamics of any model: masses, gravity, Rayleigh damping, and a time integrator (docs/architecture.md: one simulation
 /// core for every model; integrators see only the model's energy, forces and Hessian).
 #include <hooke/model/problem.hpp>
 #include <hooke/solve/integrator.hpp>

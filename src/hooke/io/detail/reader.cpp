@@ -15,7 +15,7 @@ Reader Reader::open(const std::filesystem::path& path) {
 }
 
 // Counts newlines from the last position asked about (readers ask in increasing order), so that asking for the line
-// of every record is linear in the file size, not quadratic (issue 16 item 5: a 2.7 MB OBJ took 58 s).
+// of every record is linear in the file size, not quadratic (a 2.7 MB OBJ took 58 s when it was quadratic).
 std::int64_t Reader::line() const {
   const size_t pos = std::min(m_pos, m_data.size());
   if (pos < m_counted_to) {
