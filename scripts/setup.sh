@@ -10,7 +10,7 @@
 set -euo pipefail
 
 core=(
-  build-essential cmake ninja-build pkg-config clang-format clang-14 libclang-rt-14-dev
+  build-essential cmake ninja-build pkg-config ccache clang-format clang-14 libclang-rt-14-dev
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread libtbb-dev libnglib-dev
   libcli11-dev libfmt-dev libspdlog-dev nlohmann-json3-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev
