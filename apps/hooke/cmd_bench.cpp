@@ -134,12 +134,7 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--press", o->options.press,
                   "Instead of the drag, press the whole top down by this fraction of the height (e.g. 0.3)")
       ->capture_default_str();
-  cmd->add_option("--spring-exponent", o->options.spring_exponent,
-                  "The models' springs: Seth-Hill exponent of the large-strain law (1: Hookean)")
-      ->capture_default_str();
-  cmd->add_option("--volume-exponent", o->options.volume_exponent,
-                  "The models' volume terms: Seth-Hill exponent of the large-strain law (1: quadratic)")
-      ->capture_default_str();
+  add_term_law_options(cmd, o->options.spring_exponent, o->options.volume_exponent);
   cmd->add_option("--integrators", o->options.integrators,
                   "Only these rows, e.g. quasi-newton,\"local-global (chebyshev)\" (default: all)")
       ->delimiter(',');

@@ -56,6 +56,9 @@ struct ModelSource {
   SurfaceInput surface;
   TetrahedralizeInput tetrahedralize;  ///< a closed surface given to a tet method
 };
+/// Registers --spring-exponent and --volume-exponent (the models' term law, calibrate::ModelOptions) on `cmd`.
+void add_term_law_options(CLI::App* cmd, double& spring_exponent, double& volume_exponent);
+
 /// Registers [MESH], --model, --young, --poisson, --method, --unit, --thickness, --density, --plane, the
 /// surface model's options and the tetrahedralization options on `cmd`, bound to `in`.
 void add_model_source_options(CLI::App* cmd, ModelSource& in);

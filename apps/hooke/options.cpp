@@ -94,6 +94,16 @@ mesh::TetrahedralizeOptions tetrahedralize_options(const TetrahedralizeInput& in
   return o;
 }
 
+void add_term_law_options(CLI::App* cmd, double& spring_exponent, double& volume_exponent) {
+  cmd->add_option("--spring-exponent", spring_exponent,
+                  "Springs' large-strain law: Seth-Hill exponent m of E = k l0^2 e_m(l/l0)^2 / 2 (1: Hookean)")
+      ->capture_default_str();
+  cmd->add_option("--volume-exponent", volume_exponent,
+                  "Volume terms' large-strain law: Seth-Hill exponent q of E = k_V e_q(V/V0)^2 / 2 (1: quadratic, "
+                  "<= 0: a barrier against flattening)")
+      ->capture_default_str();
+}
+
 void add_model_source_options(CLI::App* cmd, ModelSource& in) {
   cmd->add_option("mesh", in.mesh_path,
                   "Mesh file (.msh, .vtu, .node/.ele, .obj, .off, .stl; a closed surface is tetrahedralized for every "
@@ -111,13 +121,7 @@ void add_model_source_options(CLI::App* cmd, ModelSource& in) {
   cmd->add_option("--thickness", in.thickness, "Plate thickness for 2D meshes, m")->capture_default_str();
   cmd->add_option("--density", in.density, "Density for the lumped masses, kg/m^3")->capture_default_str();
   cmd->add_option("--plane", in.plane, "2D models: stress or strain")->capture_default_str();
-  cmd->add_option("--spring-exponent", in.spring_exponent,
-                  "Springs' large-strain law: Seth-Hill exponent m of E = k l0^2 e_m(l/l0)^2 / 2 (1: Hookean)")
-      ->capture_default_str();
-  cmd->add_option("--volume-exponent", in.volume_exponent,
-                  "Volume terms' large-strain law: Seth-Hill exponent q of E = k_V e_q(V/V0)^2 / 2 (1: quadratic, "
-                  "<= 0: a barrier against flattening)")
-      ->capture_default_str();
+  add_term_law_options(cmd, in.spring_exponent, in.volume_exponent);
   add_surface_options(cmd, in.surface);
   add_tetrahedralize_options(cmd, in.tetrahedralize);
 }
