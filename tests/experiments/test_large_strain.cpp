@@ -138,6 +138,17 @@ TEST(LargeStrain, AutoOverARangeKeepsTheBestFittedModel) {
   }
 }
 
+// St. Venant-Kirchhoff stiffens in stretch and softens in compression: its fitted springs are on the Green-strain side
+// (m > 1), the reverse of a Neo-Hookean fit, and better than Hookean ones.
+TEST(LargeStrain, AStVKFitChoosesSpringsThatStiffenInStretch) {
+  TermLawFitOptions fo;
+  fo.law = Law::kStVK;
+  fo.strain_range = 0.12;
+  const TermLawFit fit = fit_term_law(cylinder_model(0.3), fo);
+  EXPECT_GT(fit.spring_exponent, 1.0) << fit.summary;
+  EXPECT_LT(fit.worst_error, fit.hookean_error) << fit.summary;
+}
+
 TEST(LargeStrain, TheFitRefusesWhatItCannotFit) {
   TermLawFitOptions fo;
   fo.strain_range = 0.7;

@@ -13,6 +13,8 @@ namespace hooke::experiments {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// Where the exponents are searched (inside validate_model's [-8, 8]).
+constexpr std::pair<double, double> kSpringRange{-4.0, 4.0}, kVolumeRange{-6.0, 4.0};
 
 void require_fittable(const calibrate::CalibratedModel& model, const TermLawFitOptions& o) {
   if (!(o.strain_range > 0.0 && o.strain_range <= 0.5))
@@ -73,8 +75,8 @@ TermLawFit fit_term_law(const calibrate::CalibratedModel& model, const TermLawFi
   // the full press first; load steps from rest only where that fails), which halves the fit's time.
   std::vector<VecX> best_solutions;
   auto error_at = [&](double m, double q) {
-    m = std::clamp(m, -4.0, 2.0);
-    q = std::clamp(q, -6.0, 1.0);
+    m = std::clamp(m, kSpringRange.first, kSpringRange.second);
+    q = std::clamp(q, kVolumeRange.first, kVolumeRange.second);
     if (const auto it = seen.find({m, q}); it != seen.end()) return it->second;
     trial.springs.spring_exponent = m;
     trial.springs.volume_exponent = q;
@@ -94,9 +96,13 @@ TermLawFit fit_term_law(const calibrate::CalibratedModel& model, const TermLawFi
   TermLawFit fit;
   fit.hookean_error = error_at(1.0, 1.0);
   double best_m = 1.0, best_q = 1.0, best = fit.hookean_error;
-  // The coarse grid: Hookean, log (m = 0) and the inverse (m = -1) springs beside quadratic, log and barrier volumes.
-  for (double m : {1.0, 0.0, -1.0})
-    for (double q : {1.0, 0.0, -1.0, -2.0})
+  // The coarse grid. Laws that stiffen in compression (Neo-Hookean, and linear's rotation-free response): Hookean,
+  // log (m = 0) and inverse (m = -1) springs beside quadratic, log and barrier volumes. St. Venant-Kirchhoff, which
+  // stiffens in stretch and softens in compression: Green-strain springs (m = 2, Kikuuwe et al.'s edge StVK) and
+  // beyond, with volume laws from softening (q = 2) to the log.
+  const bool green = options.law == material::Law::kStVK;
+  for (double m : green ? std::vector<double>{3.0, 2.0, 1.0} : std::vector<double>{1.0, 0.0, -1.0})
+    for (double q : green ? std::vector<double>{2.0, 1.0, 0.0, -1.0} : std::vector<double>{1.0, 0.0, -1.0, -2.0})
       if (const double e = error_at(m, q); e < best) std::tie(best, best_m, best_q) = std::tuple(e, m, q);
   // Pattern search from the best grid point: move while a neighbour improves, then halve the step.
   for (double step = 0.5; step >= 0.125; step *= 0.5) {
@@ -104,7 +110,8 @@ TermLawFit fit_term_law(const calibrate::CalibratedModel& model, const TermLawFi
       moved = false;
       for (const auto& [dm, dq] :
            std::vector<std::pair<double, double>>{{step, 0.0}, {-step, 0.0}, {0.0, step}, {0.0, -step}}) {
-        const double m = std::clamp(best_m + dm, -4.0, 2.0), q = std::clamp(best_q + dq, -6.0, 1.0);
+        const double m = std::clamp(best_m + dm, kSpringRange.first, kSpringRange.second);
+        const double q = std::clamp(best_q + dq, kVolumeRange.first, kVolumeRange.second);
         if (const double e = error_at(m, q); e < best) {
           std::tie(best, best_m, best_q) = std::tuple(e, m, q);
           moved = true;

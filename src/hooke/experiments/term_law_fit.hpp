@@ -35,8 +35,9 @@ struct TermLawFit {
 double term_law_error(const calibrate::CalibratedModel& model, const TermLawFitOptions& options);
 
 /// Fits (m, q) of a springs model (a calibration method's, or a file's springs and volume terms) on its own mesh and
-/// material: the FEM references are solved once; a coarse grid of (m, q) is measured, then a pattern search refines
-/// the best to 1/8 (m in [-4, 2], q in [-6, 1]). Returns the pair of least worst error; it is never worse than
+/// material: the FEM references are solved once; a coarse grid of (m, q) is measured (m in {1, 0, -1}, q in
+/// {1, 0, -1, -2}; for St. Venant-Kirchhoff m in {3, 2, 1}, q in {2, 1, 0, -1}), then a pattern search refines the best
+/// to 1/8 (m in [-4, 4], q in [-6, 4]). Returns the pair of least worst error; it is never worse than
 /// m = q = 1, which is always measured.
 /// @throws InvalidArgument for a surface or FEM model, a 2D model without springs, or a strain outside (0, 0.5];
 ///   SolverFailure when the FEM has no stable equilibrium on a case (the law cannot reach that strain)
