@@ -1,5 +1,6 @@
 #pragma once
-// One define_<concept>(module) per binding file (python/src mirrors src/hooke, docs/architecture.md), called from bindings.cpp.
+// One define_<concept>(module) per binding file (python/src mirrors src/hooke, docs/architecture.md), called from
+// bindings.cpp.
 #include <pybind11/pybind11.h>
 
 namespace hooke::python {

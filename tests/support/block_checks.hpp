@@ -1,6 +1,7 @@
 #pragma once
 // The derivative check every term block gets: gradient = central differences of the energy, Hessian =
-// central differences of the gradient (docs/architecture.md, independent checks); and the one-pass energy_and_add_gradient = the two calls.
+// central differences of the gradient (docs/architecture.md, independent checks); and the one-pass
+// energy_and_add_gradient = the two calls.
 #include <gtest/gtest.h>
 
 #include <hooke/model/hessian_assembly.hpp>

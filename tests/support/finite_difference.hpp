@@ -1,5 +1,6 @@
 #pragma once
-// Central finite differences, the independent check of every gradient and Hessian (docs/architecture.md, independent checks).
+// Central finite differences, the independent check of every gradient and Hessian (docs/architecture.md, independent
+// checks).
 #include <functional>
 #include <hooke/core/types.hpp>
 

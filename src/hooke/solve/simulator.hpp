@@ -1,6 +1,6 @@
 #pragma once
-/// Dynamics of any model: masses, gravity, Rayleigh damping, and a time integrator (docs/architecture.md: one simulation
-/// core for every model; integrators see only the model's energy, forces and Hessian).
+/// Dynamics of any model: masses, gravity, Rayleigh damping, and a time integrator (docs/architecture.md: one
+/// simulation core for every model; integrators see only the model's energy, forces and Hessian).
 #include <hooke/model/problem.hpp>
 #include <hooke/solve/integrator.hpp>
 #include <memory>
