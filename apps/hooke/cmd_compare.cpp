@@ -46,10 +46,9 @@ void print_comparison(const CompareCli& o, const calibrate::CalibratedModel& mod
               c.spring_report.message.c_str());
   // Under traction control a model that loses stability or stops short has a limit load below the one asked for.
   const auto limit = [&](const solve::SolveReport& r, const char* who) {
+    const double factor = r.critical_load_factor > 0.0 ? r.critical_load_factor : r.load_factor;
     if (c.load.control == model::LoadControl::kTraction && r.status != solve::SolveStatus::kConverged)
-      std::printf("  limit     %s: %.4g of the load (%.6g Pa)\n", who,
-                  r.critical_load_factor > 0.0 ? r.critical_load_factor : r.load_factor,
-                  (r.critical_load_factor > 0.0 ? r.critical_load_factor : r.load_factor) * c.load.traction_pa);
+      std::printf("  limit     %s: %.4g of the load (%.6g Pa)\n", who, factor, factor * c.load.traction_pa);
   };
   limit(c.fem_report, "fem");
   limit(c.spring_report, "springs");

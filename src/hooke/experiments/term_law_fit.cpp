@@ -74,6 +74,7 @@ TermLawFit fit_term_law(const calibrate::CalibratedModel& model, const TermLawFi
   // The pattern search's laws are neighbours: each is solved from the equilibria of the best law so far (Newton at
   // the full press first; load steps from rest only where that fails), which halves the fit's time.
   std::vector<VecX> best_solutions;
+  double best_seen = kInfinity;  // the smallest error measured so far, whose equilibria best_solutions holds
   auto error_at = [&](double m, double q) {
     m = std::clamp(m, kSpringRange.first, kSpringRange.second);
     q = std::clamp(q, kVolumeRange.first, kVolumeRange.second);
@@ -87,10 +88,10 @@ TermLawFit fit_term_law(const calibrate::CalibratedModel& model, const TermLawFi
     } catch (const SolverFailure&) {  // no equilibrium reached: this law does not hold there
     }
     seen[{m, q}] = e;
-    if (e < kInfinity &&
-        (best_solutions.empty() ||
-         e <= std::min_element(seen.begin(), seen.end(), [](auto& a, auto& b) { return a.second < b.second; })->second))
+    if (e < kInfinity && e <= best_seen) {
+      best_seen = e;
       best_solutions = std::move(solutions);
+    }
     return e;
   };
   TermLawFit fit;
