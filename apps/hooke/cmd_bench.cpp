@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <hooke/calibrate/model_settings.hpp>
 #include <hooke/core/atomic_file.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/experiments/dynamics_benchmark.hpp>
@@ -23,6 +24,7 @@ namespace {
 struct BenchCli {
   std::vector<std::string> sizes{"1k", "10k"};
   experiments::DynamicsBenchmarkOptions options;
+  GivenSettings model;  ///< calibrate::model_settings() rows of settings::kBench (the term law)
   std::string out_dir;
   bool haptics = false;
   std::string haptic_stiffness = "secant";
@@ -64,6 +66,12 @@ int run_haptics(const BenchCli& o, const std::vector<int>& sizes) {
 
 int run_bench(const BenchCli& o) {
   experiments::DynamicsBenchmarkOptions options = o.options;
+  calibrate::ModelOptions model;
+  model.spring_exponent = options.spring_exponent;
+  model.volume_exponent = options.volume_exponent;
+  settings::apply(calibrate::model_settings(), model, o.model, settings::kBench);
+  options.spring_exponent = model.spring_exponent;
+  options.volume_exponent = model.volume_exponent;
   options.sizes.clear();
   for (const std::string& s : o.sizes) {
     if (s == "1k")
@@ -134,7 +142,7 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--press", o->options.press,
                   "Instead of the drag, press the whole top down by this fraction of the height (e.g. 0.3)")
       ->capture_default_str();
-  add_term_law_options(cmd, o->options.spring_exponent, o->options.volume_exponent);
+  add_settings(cmd, settings::describe(calibrate::model_settings(), settings::kBench), o->model);
   cmd->add_option("--integrators", o->options.integrators,
                   "Only these rows, e.g. quasi-newton,\"local-global (chebyshev)\" (default: all)")
       ->delimiter(',');

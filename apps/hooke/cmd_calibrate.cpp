@@ -2,9 +2,6 @@
 // model as a file (.json, .vtu, .csv; docs/model_format.md), optionally with its measured error against FEM.
 #include <cstdio>
 #include <hooke/calibrate/model_file.hpp>
-#include <hooke/core/error.hpp>
-#include <hooke/experiments/certify.hpp>
-#include <hooke/experiments/term_law_fit.hpp>
 #include <memory>
 #include <string>
 
@@ -14,13 +11,8 @@ namespace hooke::cli {
 namespace {
 
 struct CalibrateCli {
-  ModelSource in;
+  ModelSource in;  ///< the mesh or model file and every calibration setting (the range fit's, the certificate's)
   std::string output;
-  bool certify = false;
-  double certify_strain = 0.01;
-  std::string law = "linear";
-  double strain_range = 0.0;  ///< > 0: the term law fitted to `law` up to this strain
-  int layers = 4;
 };
 
 void print_model(const calibrate::CalibratedModel& m) {
@@ -57,29 +49,16 @@ void print_certificate(const std::vector<calibrate::CertificateCase>& cases, dou
 }
 
 int run_calibrate(const CalibrateCli& o) {
+  const experiments::CalibrationSettings settings = calibration_settings(o.in);
   calibrate::CalibratedModel model = load_model(o.in);
-  const material::Law law = material::law_from_name(o.law);
-  if (o.strain_range < 0.0) throw InvalidArgument("--strain-range must be >= 0");
-  if (o.strain_range > 0.0) {
-    experiments::TermLawFitOptions fo;
-    fo.law = law;
-    fo.strain_range = o.strain_range;
-    // auto (a mesh given, no --model): the any-nu models fitted beside the small-strain pick, the best kept.
-    const bool automatic = o.in.method == "auto" && o.in.model_path.empty() && !model.surface;
-    model = automatic ? experiments::choose_for_range(model, fo) : experiments::with_fitted_law(model, fo);
-  } else if (law != material::Law::kLinear) {
-    throw InvalidArgument("--law " + o.law + " needs --strain-range (the strain up to which the model follows it)");
-  }
+  // auto (a mesh given, no --model): the any-nu models fitted beside the small-strain pick, the best kept.
+  const bool automatic = settings.model.method == "auto" && o.in.model_path.empty() && !model.surface;
+  model = experiments::finish_calibration(std::move(model), settings, automatic);
   print_model(model);
-  if (o.strain_range > 0.0)
+  if (settings.strain_range > 0.0)
     std::printf("  term law  spring exponent %g, volume exponent %g: %s\n", model.springs.spring_exponent,
                 model.springs.volume_exponent, model.choice.c_str());
-  if (o.certify && o.strain_range > 0.0) {
-    model.certificate = experiments::certify_range(model, law, o.strain_range, o.layers);
-    const auto& n = model.mesh.nodes;
-    print_certificate(model.certificate, n.col(n.cols() - 1).maxCoeff() - n.col(n.cols() - 1).minCoeff());
-  } else if (o.certify) {
-    model.certificate = experiments::certify(model, o.certify_strain, o.layers);
+  if (settings.certify) {
     const auto& n = model.mesh.nodes;
     print_certificate(model.certificate, n.col(n.cols() - 1).maxCoeff() - n.col(n.cols() - 1).minCoeff());
   }
@@ -93,20 +72,7 @@ int run_calibrate(const CalibrateCli& o) {
 Action add_calibrate_command(CLI::App& app) {
   auto o = std::make_shared<CalibrateCli>();
   CLI::App* cmd = app.add_subcommand("calibrate", "Calibrate a spring model from E and nu and write it to a file");
-  add_model_source_options(cmd, o->in);
-  cmd->add_flag("--certify", o->certify,
-                "Also measure the model against the linear FEM (stretch, compress, shear) and store the errors");
-  cmd->add_option("--certify-strain", o->certify_strain, "Mean strain of the certificate's load cases")
-      ->capture_default_str();
-  cmd->add_option("--law", o->law,
-                  "The FEM law the model follows at large strain (linear, stvk, neohookean), with --strain-range")
-      ->capture_default_str();
-  cmd->add_option("--strain-range", o->strain_range,
-                  "Fit the springs' and volume terms' large-strain law to --law up to this strain (displacement-"
-                  "controlled stretch, compression, shear at S/2 and S); --certify then measures 1 % and S against it")
-      ->capture_default_str();
-  cmd->add_option("--layers", o->layers, "surface: layers of the radial tetrahedralisation for the certificate")
-      ->capture_default_str();
+  add_model_source_options(cmd, o->in, settings::kCalibrate);
   cmd->add_option("-o,--output", o->output, "Model file: .json (the whole model), .vtu (ParaView) or .csv (springs)")
       ->required();
   return [o] { return run_calibrate(*o); };

@@ -112,7 +112,7 @@ int run_compare(const CompareCli& o) {
 Action add_compare_command(CLI::App& app) {
   auto o = std::make_shared<CompareCli>();
   CLI::App* cmd = app.add_subcommand("compare", "Compare a calibrated model with the FEM reference");
-  add_model_source_options(cmd, o->in);
+  add_model_source_options(cmd, o->in, settings::kCompare);
   cmd->add_option("--layers", o->layers, "surface: layers of the radial tetrahedralisation for the FEM")
       ->capture_default_str();
   cmd->add_option("--load", o->load, "stretch, compress or shear")->capture_default_str();

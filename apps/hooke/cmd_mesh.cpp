@@ -1,6 +1,7 @@
 // hooke mesh info MESH | convert IN OUT | tetrahedralize SURFACE -o VOLUME: inspect, convert and fill meshes.
 #include <algorithm>
 #include <cstdio>
+#include <hooke/calibrate/model_settings.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/io/mesh_io.hpp>
@@ -21,7 +22,7 @@ namespace {
 struct MeshOptions {
   std::string input, output, unit = "m", msh_version = "4.1";
   bool binary = false;
-  TetrahedralizeInput tetrahedralize;
+  GivenSettings tetrahedralize;  ///< calibrate::model_settings() rows of settings::kMesh
 };
 
 int run_info(const MeshOptions& o) {
@@ -68,6 +69,12 @@ int run_convert(const MeshOptions& o) {
   std::printf("wrote %s: %d nodes, %d %s elements (coordinates in m)\n", o.output.c_str(), m.node_count(),
               m.element_count(), std::string(mesh::element_kind_name(m.kind)).c_str());
   return 0;
+}
+
+mesh::TetrahedralizeOptions tetrahedralize_options(const GivenSettings& given, double metres_per_unit) {
+  calibrate::ModelOptions o;
+  settings::apply(calibrate::model_settings(), o, given, settings::kMesh, metres_per_unit);
+  return o.tetrahedralize;
 }
 
 int run_tetrahedralize(const MeshOptions& o) {
@@ -118,7 +125,8 @@ Action add_mesh_command(CLI::App& app) {
   tet->add_option("-o,--output", o->output, "Tet mesh to write (.msh, .vtu, .node/.ele)")->required();
   tet->add_option("--unit", o->unit, "Length unit of the surface file: m, cm, mm, um")->capture_default_str();
   tet->add_flag("--binary", o->binary, "Binary .msh");
-  add_tetrahedralize_options(tet, o->tetrahedralize);
+  add_settings(tet, settings::describe(calibrate::model_settings(), settings::kMesh), o->tetrahedralize,
+               "Closed surface to tets");
   return [o, info, tet] {
     if (info->parsed()) return run_info(*o);
     return tet->parsed() ? run_tetrahedralize(*o) : run_convert(*o);

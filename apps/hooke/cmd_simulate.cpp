@@ -68,7 +68,7 @@ Action add_simulate_command(CLI::App& app) {
   auto o = std::make_shared<SimulateCli>();
   o->in.law = "stvk";
   CLI::App* cmd = app.add_subcommand("simulate", "Simulate a calibrated model (or the FEM model) in time");
-  add_model_source_options(cmd, o->in);
+  add_model_source_options(cmd, o->in, settings::kSimulate);
   cmd->add_option("--law", o->in.law, "FEM law with --method fem: linear, stvk, neohookean")->capture_default_str();
   add_integrator_options(cmd, o->integrator, o->run.simulator);
   add_dynamics_options(cmd, o->run.dynamics);

@@ -4,11 +4,12 @@
 #include <cmath>
 #include <functional>
 #include <hooke/calibrate/calibrated_model.hpp>
-#include <hooke/calibrate/surface_model.hpp>
-#include <hooke/mesh/tetrahedralize.hpp>
+#include <hooke/core/settings.hpp>
+#include <hooke/experiments/calibration.hpp>
 #include <hooke/solve/dynamics_setup.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hooke::cli {
@@ -24,44 +25,29 @@ struct ModelInput {
 /// Registers MESH, --young, --poisson, --unit and --thickness on `cmd`, bound to `in`.
 void add_model_input_options(CLI::App* cmd, ModelInput& in);
 
-/// The surface model's options (`--method surface`): scheme, readings of the paper's equations, centre.
-struct SurfaceInput {
-  std::string scheme = "D", anchor_law, volume_force = "nodal";
-  std::vector<double> centre;  ///< x,y,z in m, or empty for the volume centroid
-};
-/// Registers --scheme, --anchor-law, --volume-force and --centre on `cmd`.
-void add_surface_options(CLI::App* cmd, SurfaceInput& in);
-/// The library options they select (density, mass and thickness left at their defaults).
-/// @throws InvalidArgument for an unknown name or a centre without three components
-calibrate::SurfaceOptions surface_options(const SurfaceInput& in);
+/// Settings given on the command line, in the order given: (name, text), for settings::apply.
+using GivenSettings = std::vector<std::pair<std::string, std::string>>;
 
-/// How a closed surface is made into tets (mesh::tetrahedralize): lengths in the mesh file's unit.
-struct TetrahedralizeInput {
-  double size = 0.0, max_volume = 0.0;  ///< --size (unit), --max-volume (unit^3); 0: not given
-  std::string surface_mesh = "keep";
-  std::string mesher = "netgen";
-  mesh::TetrahedralizeOptions options;  ///< the numbers bound directly (quality, fineness, grading, steps)
-};
-/// Registers --mesher, --size, --max-volume, --quality, --surface-mesh, --fineness, --grading and --optimisation-steps.
-void add_tetrahedralize_options(CLI::App* cmd, TetrahedralizeInput& in);
-/// The library options `in` selects, lengths converted to metres with `metres_per_unit`.
-/// @throws InvalidArgument for --size with --max-volume (mesh::set_mesh_size), or an unknown --surface-mesh or --mesher
-mesh::TetrahedralizeOptions tetrahedralize_options(const TetrahedralizeInput& in, double metres_per_unit);
+/// Registers --NAME for every row of `rows` on `cmd` (a flag for a flag row), its help, unit, range and default
+/// generated from the row (settings::Description); what is given lands in `given`, to be checked and applied by the
+/// library (settings::apply). `group` titles them in --help (empty: the command's own options).
+void add_settings(CLI::App* cmd, const std::vector<settings::Description>& rows, GivenSettings& given,
+                  const std::string& group = "");
 
-/// Where a command's model comes from: a model file (--model), or a mesh calibrated by --method from E, nu.
+/// Where a command's model comes from: a model file (--model), or a mesh calibrated from E, nu with the calibration
+/// settings (experiments::calibration_settings()) given on the command line.
 struct ModelSource {
-  std::string mesh_path, unit = "m", model_path, method = "auto", law = "linear", plane = "stress";
-  double young = std::nan(""), poisson = std::nan(""), thickness = 1e-3, density = 1000.0;  ///< NaN: not given
-  double spring_exponent = 1.0, volume_exponent = 1.0;  ///< the term law (calibrate::ModelOptions)
-  SurfaceInput surface;
-  TetrahedralizeInput tetrahedralize;  ///< a closed surface given to a tet method
+  std::string mesh_path, unit = "m", model_path, law = "linear", plane = "stress";
+  double young = std::nan(""), poisson = std::nan(""), thickness = 1e-3;  ///< NaN: not given
+  GivenSettings given;  ///< the calibration settings given (--method, --density, --size, ...)
 };
-/// Registers --spring-exponent and --volume-exponent (the models' term law, calibrate::ModelOptions) on `cmd`.
-void add_term_law_options(CLI::App* cmd, double& spring_exponent, double& volume_exponent);
 
-/// Registers [MESH], --model, --young, --poisson, --method, --unit, --thickness, --density, --plane, the
-/// surface model's options and the tetrahedralization options on `cmd`, bound to `in`.
-void add_model_source_options(CLI::App* cmd, ModelSource& in);
+/// Registers [MESH], --model, --young, --poisson, --unit, --thickness, --plane and every calibration setting of
+/// `command` (settings::Command) on `cmd`, bound to `in`.
+void add_model_source_options(CLI::App* cmd, ModelSource& in, unsigned command);
+/// The calibration settings `in` gives, lengths converted from the mesh unit to metres.
+/// @throws InvalidArgument for a malformed or out-of-range value, naming the option
+experiments::CalibrationSettings calibration_settings(const ModelSource& in);
 /// The model `in` names: read from --model (checked against MESH when one is given too; a MESH ending in .json is
 /// read as --model), or calibrated on MESH by the library's model factory.
 /// @throws InvalidArgument when neither or a conflicting combination is given

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/calibrate/model_file.hpp>
+#include <hooke/calibrate/model_settings.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/io/mesh_io.hpp>
@@ -33,78 +34,27 @@ void add_model_input_options(CLI::App* cmd, ModelInput& in) {
   cmd->add_option("--thickness", in.thickness, "Plate thickness for 2D meshes, m")->capture_default_str();
 }
 
-void add_surface_options(CLI::App* cmd, SurfaceInput& in) {
-  cmd->add_option("--scheme", in.scheme, "surface: scheme A, B, C or D")->capture_default_str();
-  cmd->add_option("--anchor-law", in.anchor_law, "surface: single, blend or tensor (default: the scheme's)");
-  cmd->add_option("--volume-force", in.volume_force, "surface: nodal, printed or energy")->capture_default_str();
-  cmd->add_option("--centre", in.centre, "surface: object centre x,y,z in m (default: the volume centroid)")
-      ->delimiter(',');
-}
-
-calibrate::SurfaceOptions surface_options(const SurfaceInput& in) {
-  calibrate::SurfaceOptions o;
-  o.scheme = calibrate::surface_scheme_from_name(in.scheme);
-  if (!in.anchor_law.empty()) o.anchor_law = surface::anchor_law_from_name(in.anchor_law);
-  o.volume_force = surface::volume_force_from_name(in.volume_force);
-  if (!in.centre.empty()) {
-    if (in.centre.size() != 3) throw InvalidArgument("--centre needs three components x,y,z (m)");
-    o.centre = Vec3(in.centre[0], in.centre[1], in.centre[2]);
+void add_settings(CLI::App* cmd, const std::vector<settings::Description>& rows, GivenSettings& given,
+                  const std::string& group) {
+  for (const settings::Description& row : rows) {
+    const std::string flag = "--" + row.name, name = row.name;
+    CLI::Option* option = nullptr;
+    if (row.type == settings::Type::kFlag) {
+      option = cmd->add_flag_callback(
+          flag, [&given, name] { given.emplace_back(name, "on"); }, row.long_help());
+    } else {
+      option = cmd->add_option_function<std::string>(
+          flag, [&given, name](const std::string& text) { given.emplace_back(name, text); }, row.long_help());
+      option->type_name(row.type == settings::Type::kNumber    ? "FLOAT"
+                        : row.type == settings::Type::kInteger ? "INT"
+                                                               : "TEXT");
+      if (!row.default_text.empty()) option->default_str(row.default_text);
+    }
+    if (!group.empty()) option->group(group);
   }
-  return o;
 }
 
-void add_tetrahedralize_options(CLI::App* cmd, TetrahedralizeInput& in) {
-  const std::string group = "Closed surface to tets";
-  cmd->add_option("--mesher", in.mesher,
-                  "netgen (linked, the default) or tetgen (TetGen's program on files, about 8x faster on large "
-                  "scans, keeps the surface; Debian's tetgen program, never linked)")
-      ->capture_default_str()
-      ->group(group);
-  cmd->add_option("--size", in.size, "Largest tet edge inside the body, in the mesh unit (default: diagonal / 25)")
-      ->group(group);
-  cmd->add_option("--max-volume", in.max_volume,
-                  "Largest tet volume, in the mesh unit cubed (instead of --size: the edge of the regular tet)")
-      ->group(group);
-  cmd->add_option("--quality", in.options.min_radius_ratio,
-                  "Quality floor: refuse the mesh if a tet's radius ratio (1 regular, 0 flat) is below it; 0 reports")
-      ->capture_default_str()
-      ->group(group);
-  cmd->add_option("--surface-mesh", in.surface_mesh,
-                  "keep (the scan's triangles bound the tets: nodes and volume exact) or remesh (Netgen remeshes "
-                  "the surface at --size first)")
-      ->capture_default_str()
-      ->group(group);
-  cmd->add_option("--fineness", in.options.fineness, "Netgen fineness, 0 (coarse) .. 1 (fine)")
-      ->capture_default_str()
-      ->group(group);
-  cmd->add_option("--grading", in.options.grading, "Netgen grading, 0 (uniform) .. 1 (aggressive)")
-      ->capture_default_str()
-      ->group(group);
-  cmd->add_option("--optimisation-steps", in.options.optimisation_steps, "Netgen volume optimisation passes")
-      ->capture_default_str()
-      ->group(group);
-}
-
-mesh::TetrahedralizeOptions tetrahedralize_options(const TetrahedralizeInput& in, double metres_per_unit) {
-  mesh::TetrahedralizeOptions o = in.options;
-  o.surface = mesh::surface_meshing_from_name(in.surface_mesh);
-  o.mesher = mesh::mesher_from_name(in.mesher);
-  mesh::set_mesh_size(o, in.size * metres_per_unit,
-                      in.max_volume * metres_per_unit * metres_per_unit * metres_per_unit);
-  return o;
-}
-
-void add_term_law_options(CLI::App* cmd, double& spring_exponent, double& volume_exponent) {
-  cmd->add_option("--spring-exponent", spring_exponent,
-                  "Springs' large-strain law: Seth-Hill exponent m of E = k l0^2 e_m(l/l0)^2 / 2 (1: Hookean)")
-      ->capture_default_str();
-  cmd->add_option("--volume-exponent", volume_exponent,
-                  "Volume terms' large-strain law: Seth-Hill exponent q of E = k_V e_q(V/V0)^2 / 2 (1: quadratic, "
-                  "<= 0: a barrier against flattening)")
-      ->capture_default_str();
-}
-
-void add_model_source_options(CLI::App* cmd, ModelSource& in) {
+void add_model_source_options(CLI::App* cmd, ModelSource& in, unsigned command) {
   cmd->add_option("mesh", in.mesh_path,
                   "Mesh file (.msh, .vtu, .node/.ele, .obj, .off, .stl; a closed surface is tetrahedralized for every "
                   "method but surface), or a model file (.json, as --model); optional with --model");
@@ -113,17 +63,17 @@ void add_model_source_options(CLI::App* cmd, ModelSource& in) {
                   "--method, --young and --poisson");
   cmd->add_option("--young", in.young, "Young's modulus E, Pa");
   cmd->add_option("--poisson", in.poisson, "Poisson's ratio nu, in (-1, 0.5)");
-  std::string methods;
-  for (const auto& n : calibrate::model_method_names()) methods += (methods.empty() ? "" : ", ") + n;
-  cmd->add_option("--method", in.method, "Model: " + methods)->capture_default_str();
   cmd->add_option("--unit", in.unit, "Length unit of the mesh file (and of printed lengths): m, cm, mm, um")
       ->capture_default_str();
   cmd->add_option("--thickness", in.thickness, "Plate thickness for 2D meshes, m")->capture_default_str();
-  cmd->add_option("--density", in.density, "Density for the lumped masses, kg/m^3")->capture_default_str();
   cmd->add_option("--plane", in.plane, "2D models: stress or strain")->capture_default_str();
-  add_term_law_options(cmd, in.spring_exponent, in.volume_exponent);
-  add_surface_options(cmd, in.surface);
-  add_tetrahedralize_options(cmd, in.tetrahedralize);
+  add_settings(cmd, settings::describe(experiments::calibration_settings(), command), in.given, "Model");
+}
+
+experiments::CalibrationSettings calibration_settings(const ModelSource& in) {
+  experiments::CalibrationSettings s;
+  settings::apply(experiments::calibration_settings(), s, in.given, 0, metres_per_unit(in.unit));
+  return s;
 }
 
 calibrate::CalibratedModel load_model(const ModelSource& source) {
@@ -146,15 +96,9 @@ calibrate::CalibratedModel load_model(const ModelSource& source) {
   if (std::isnan(in.young) || std::isnan(in.poisson))
     throw InvalidArgument("--young and --poisson are required (or --model MODEL.json)");
   // The law is the FEM model's (--method fem); every calibration starts from the linear material.
-  material::Material mat{in.method == "fem" ? material::law_from_name(in.law) : material::Law::kLinear, in.young,
+  const calibrate::ModelOptions mo = calibration_settings(in).model;
+  material::Material mat{mo.method == "fem" ? material::law_from_name(in.law) : material::Law::kLinear, in.young,
                          in.poisson, material::plane_from_name(in.plane), in.thickness};
-  calibrate::ModelOptions mo;
-  mo.method = in.method;
-  mo.density = in.density;
-  mo.spring_exponent = in.spring_exponent;
-  mo.volume_exponent = in.volume_exponent;
-  if (in.method == "surface" || in.method == "auto") mo.surface = surface_options(in.surface);
-  mo.tetrahedralize = tetrahedralize_options(in.tetrahedralize, ro.metres_per_unit);
   calibrate::CalibratedModel model = calibrate::calibrate_model(io::read_mesh(in.mesh_path, ro), mat, mo);
   if (!model.meshing.empty()) std::fprintf(stderr, "hooke: tetrahedralized: %s\n", model.meshing.c_str());
   if (!model.choice.empty()) std::fprintf(stderr, "hooke: %s\n", model.choice.c_str());  // what --method auto picked

@@ -2,10 +2,12 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <hooke/calibrate/model_factory.hpp>
-#include <hooke/calibrate/surface_model.hpp>
+#include <hooke/calibrate/model_settings.hpp>
+#include <hooke/core/error.hpp>
 #include <hooke/interactive/picking.hpp>
 #include <string>
 #include <vector>
@@ -24,6 +26,54 @@ bool combo(const char* label, std::string& current, const std::vector<std::strin
       }
     ImGui::EndCombo();
   }
+  return changed;
+}
+
+// One control per live model setting but the method (above, with "file"), generated from its declaration
+// (interactive::live_model_settings): a combo for a choice, an input for a number or integer, a checkbox for a flag.
+// The library checks each value (range, names); a refused one is shown under the controls. Returns true when one
+// changed.
+bool model_settings(calibrate::ModelOptions& model, std::string& error) {
+  const auto rows = calibrate::model_settings();
+  bool changed = false;
+  for (const settings::Description& d : interactive::live_model_settings()) {
+    if (d.name == "method") continue;
+    const auto row = std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r.name == d.name; });
+    std::string text = row->get(model), label = d.name + (d.unit.empty() ? "" : " (" + d.unit + ")");
+    bool edited = false;
+    switch (d.type) {
+      case settings::Type::kChoice: edited = combo(label.c_str(), text, d.choices); break;
+      case settings::Type::kFlag: {
+        bool on = text == "on";
+        if ((edited = ImGui::Checkbox(label.c_str(), &on))) text = on ? "on" : "off";
+        break;
+      }
+      case settings::Type::kInteger: {
+        int v = settings::parse_integer(d.name, text);
+        if ((edited = ImGui::InputInt(label.c_str(), &v, 1, 1, ImGuiInputTextFlags_EnterReturnsTrue)))
+          text = std::to_string(v);
+        break;
+      }
+      case settings::Type::kNumber:
+      case settings::Type::kText: {
+        char buffer[64];
+        std::snprintf(buffer, sizeof buffer, "%s", text.c_str());
+        if ((edited = ImGui::InputText(label.c_str(), buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue)))
+          text = buffer;
+        break;
+      }
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", d.long_help().c_str());
+    if (!edited) continue;
+    try {
+      settings::set(rows, model, d.name, text);
+      error.clear();
+      changed = true;
+    } catch (const Error& e) {
+      error = e.what();
+    }
+  }
+  if (!error.empty()) ImGui::TextWrapped("%s", error.c_str());
   return changed;
 }
 
@@ -95,16 +145,7 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
   std::vector<std::string> methods = calibrate::model_method_names();
   methods.insert(methods.begin(), std::string(calibrate::model_kind_name(calibrate::ModelKind::kFile)));
   r.apply_settings |= combo("method", e.model.method, methods);
-  if (calibrate::model_kind_of_method(e.model.method) ==
-      calibrate::ModelKind::kSurface) {  // Arnab & Raja's distribution schemes (their Sec. Experimental Findings)
-    std::string scheme(calibrate::surface_scheme_name(e.model.surface.scheme));
-    if (combo("scheme", scheme, {"A", "B", "C", "D"})) {
-      e.model.surface.scheme = calibrate::surface_scheme_from_name(scheme);
-      e.model.surface.anchor_law.reset();  // the scheme's own anchor law and volume penalty
-      e.model.surface.volume_penalty.reset();
-      r.apply_settings = true;
-    }
-  }
+  r.apply_settings |= model_settings(e.model, state.setting_error);
   std::string integrator(solve::integrator_name(e.simulator.integrator));
   std::vector<std::string> integrators;
   for (const std::string_view name : solve::integrator_names()) integrators.emplace_back(name);

@@ -32,11 +32,11 @@ int run_view(ViewCli o) {
   v.model = cli::load_model(o.in);
   // A calibration keeps its method's name ("auto" re-picks when nu changes); a model file runs as it is and is remade
   // by its own method when the sliders change its material (interactive::live_method_for; "file" when hooke cannot).
-  v.settings.model.method = o.in.model_path.empty() ? o.in.method : interactive::live_method_for(v.model);
+  const calibrate::ModelOptions given = cli::calibration_settings(o.in).model;
+  v.settings.model = given;
+  v.settings.model.method = o.in.model_path.empty() ? given.method : interactive::live_method_for(v.model);
   v.settings.material = v.model.material;
   v.settings.model.density = v.model.density;
-  if (calibrate::model_kind(v.model) == calibrate::ModelKind::kSurface)
-    v.settings.model.surface = cli::surface_options(o.in.surface);
   v.settings.simulator = o.settings.simulator;
   // Multirate: the haptic loop renders from each deformation step's probe force, so it is converged further.
   if (v.haptic_rate > 0.0) v.settings.simulator.quasi_newton.tolerance = interactive::kDeformationTolerance;
@@ -65,7 +65,7 @@ int run_view(ViewCli o) {
 
 std::function<int()> add_view_options(CLI::App* cmd) {
   auto o = std::make_shared<ViewCli>();
-  cli::add_model_source_options(cmd, o->in);
+  cli::add_model_source_options(cmd, o->in, settings::kSimulate);  // the models simulate takes
   cmd->add_option("--law", o->in.law, "FEM law with --method fem: linear, stvk, neohookean")->capture_default_str();
   cli::add_integrator_options(cmd, o->integrator, o->settings.simulator);
   cli::add_dynamics_options(cmd, o->settings.dynamics);

@@ -17,6 +17,7 @@ struct ViewState {
   std::optional<VecX> ghost_positions;  ///< the FEM static solution under the probe, flat, m
   VecX ghost_force;                     ///< its holding force, N
   std::string ghost_message;            ///< how the last ghost solve went
+  std::string setting_error;            ///< why the last model setting typed in the panel was refused
   interactive::LiveSettings edit;       ///< what the panel edits; applied on release of a slider
   double grab_radius = 0.0;             ///< nodes within this distance of the picked point are grabbed too, m
   std::deque<std::pair<double, float>> force_history;  ///< (sim time, |F| in N) over the last 5 s

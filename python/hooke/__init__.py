@@ -62,62 +62,69 @@ class ValidityWarning(UserWarning):
     from nu = 1/4)."""
 
 
+def _keyword_help(command):
+    """The keywords of `command`'s declared settings (hooke._settings), one per line, for a docstring."""
+    lines = []
+    for d in _hooke._settings(command):
+        default = " (default %s)" % d["default"] if d["default"] else ""
+        lines.append("    %-19s %s%s" % (d["keyword"], d["long_help"], default))
+    return "\n".join(lines)
+
+
+def settings(command):
+    """The declared settings of `command` ("calibrate", "compare", "simulate", "view", "batch", "mesh", "bench"), as
+    a list of dicts: name (the CLI's --NAME), keyword (the Python keyword and batch column), type, unit, help, default,
+    min, max, choices and commands. Every front end's options are made from these declarations."""
+    return _hooke._settings(command)
+
+
 def tetrahedralize(surface, **options):
-    """Fills the closed triangle surface `surface` (hooke.Mesh, m) with tets (Netgen or TetGen), after checking it is
-    closed, manifold and not crossing itself (errors name the element). docs/meshing.md.
-
-    options (keywords; the library's defaults otherwise):
-    mesher             "netgen" (default, linked) or "tetgen" (TetGen's program on files, never linked)
-    size, max_volume   largest tet edge (m) or volume (m^3) inside the body; default: the bounding-box diagonal / 25
-    surface_mesh       "keep" (default: the surface's triangles bound the tets, nodes exact) or "remesh"
-    quality            refuse the mesh if a tet's radius ratio is below this (default 0: report only)
-    fineness, grading, optimisation_steps   Netgen's parameters
-
-    Returns (mesh, report): the tet hooke.Mesh and a dict (nodes, tets, volume_error, hausdorff, min_radius_ratio,
-    min_dihedral, slivers, seconds, summary, ...).
-    """
     if not isinstance(surface, Mesh):
         raise TypeError("tetrahedralize: surface must be a hooke.Mesh")
     return _hooke._tetrahedralize(surface, _hooke._tetrahedralize_options(**options))
 
 
-def calibrate(mesh, material, method="auto", density=1000.0, tetrahedralize=None, law="linear", strain_range=0.0,
-              spring_exponent=1.0, volume_exponent=1.0):
-    """Calibrates the model `method` (one of hooke.methods()) on `mesh` for `material`. "auto" (the default) picks
-    the method of smallest measured error for the mesh's element kind and nu; the model's .method is the one picked
-    and .choice says why. A closed surface is tetrahedralized first for every method but "surface" (.meshing says
-    how).
+tetrahedralize.__doc__ = """Fills the closed triangle surface `surface` (hooke.Mesh, m) with tets (Netgen or TetGen), after
+checking it is closed, manifold and not crossing itself (errors name the element). docs/meshing.md.
 
-    mesh            hooke.Mesh, coordinates in m (a closed surface-triangle mesh for method="surface")
-    material        hooke.Material (E in Pa, nu; thickness in m for 2D meshes)
-    density         kg/m^3, for the lumped masses
-    tetrahedralize  dict of hooke.tetrahedralize's options (size, max_volume, surface_mesh, quality, ...), for a
-                    closed surface
-    law, strain_range  with strain_range > 0: the springs' and volume terms' large-strain law fitted to the FEM of
-                    `law` ("linear", "stvk", "neohookean") up to that strain (.spring_exponent, .volume_exponent;
-                    .choice says what was measured); with method="auto" the any-nu models are fitted beside the
-                    small-strain pick and the one of least worst error is kept; docs/methods/large_strain.md
-    spring_exponent, volume_exponent  the large-strain law given directly (Seth-Hill exponents, 1: Hookean springs
-                    and quadratic volume terms)
+Keywords (the library's defaults otherwise; lengths in m):
+""" + _keyword_help("mesh") + """
 
-    Returns a hooke.Model: .pairs (S, 2), .stiffness (S,) N/m, .rest_length (S,) m, .volume_tets (T, 4),
-    .volume_stiffness (T,) J, .rest_volume (T,) m^3, .masses (dim * N,) kg. The method's validity warnings are
-    issued as hooke.ValidityWarning (and kept in .warnings).
-    """
+Returns (mesh, report): the tet hooke.Mesh and a dict (nodes, tets, volume_error, hausdorff, min_radius_ratio,
+min_dihedral, slivers, seconds, summary, ...).
+"""
+
+
+def calibrate(mesh, material, method=None, tetrahedralize=None, **options):
     if not isinstance(mesh, Mesh):
         raise TypeError("calibrate: mesh must be a hooke.Mesh")
     if not isinstance(material, Material):
         raise TypeError("calibrate: material must be a hooke.Material")
-    options = _hooke._tetrahedralize_options(**(tetrahedralize or {}))
-    model = _hooke._calibrate(mesh, material, method, float(density), options, float(spring_exponent),
-                              float(volume_exponent))
-    if strain_range:
-        model = _hooke._fit_term_law(model, law, float(strain_range), method == "auto")
-    elif law != "linear":
-        raise ValueError("calibrate: law=%r needs strain_range (the strain up to which the model follows it)" % law)
+    if method is not None:
+        options["method"] = method
+    for key, value in (tetrahedralize or {}).items():  # the tet keywords, also accepted grouped in a dict
+        options.setdefault(key, value)
+    model = _hooke._calibrate(mesh, material, options)
     for w in model.warnings:
         _warnings.warn(w, ValidityWarning, stacklevel=2)
     return model
+
+
+calibrate.__doc__ = """Calibrates a model on `mesh` (hooke.Mesh, m; a closed surface-triangle mesh is tetrahedralized
+first for every method but "surface", and .meshing says how) for `material` (hooke.Material: E in Pa, nu; thickness in
+m for 2D meshes), as `hooke calibrate` does. method="auto" (the default) picks the method of smallest measured error
+for the mesh's element kind and nu; the model's .method is the one picked and .choice says why. With strain_range > 0
+the springs' and volume terms' large-strain law is fitted to the FEM of `law` up to that strain
+(docs/methods/large_strain.md); with certify=True the model's .certificate holds its measured error against FEM.
+
+Keywords (each one of hooke.settings("calibrate"), unknown ones refused; `tetrahedralize` may group the tet keywords
+in a dict):
+""" + _keyword_help("calibrate") + """
+
+Returns a hooke.Model: .pairs (S, 2), .stiffness (S,) N/m, .rest_length (S,) m, .volume_tets (T, 4),
+.volume_stiffness (T,) J, .rest_volume (T,) m^3, .masses (dim * N,) kg. The method's validity warnings are issued as
+hooke.ValidityWarning (and kept in .warnings).
+"""
 
 
 def stiffness(problem):

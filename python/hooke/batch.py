@@ -24,22 +24,44 @@ import pathlib
 import sys
 import time
 
-#: The study table's columns: (name, type, default). `mesh`, `young` and `poisson` are required.
-STUDY_COLUMNS = (
+#: The batch's own columns: (name, type, default). `mesh`, `young` and `poisson` are required. `law` (a declared
+#: setting) is also the FEM law of the references of identify jobs; `strain` is the certificate's (and identify's).
+_OWN_COLUMNS = (
     ("name", str, ""),
     ("mesh", str, None),
     ("young", float, None),
     ("poisson", float, None),
-    ("method", str, "auto"),
-    ("density", float, 1000.0),
     ("strain", float, 0.01),
     ("loads", str, "stretch;compress;shear"),
-    ("law", str, "linear"),
     ("plane", str, "stress"),
     ("thickness", float, None),
     ("objective", str, "positions"),
     ("params", str, "auto"),
 )
+_KINDS = {"number": float, "integer": int, "flag": bool, "choice": str, "text": str}
+
+
+def _declared_columns():
+    """The calibration settings declared for the batch (hooke.settings("batch"): method, density, the term law, the
+    surface and tet options, law, strain_range, ...): (keyword, type, default), one column each."""
+    from . import _hooke
+
+    out = []
+    for d in _hooke._settings("batch"):
+        kind = _KINDS[d["type"]]
+        default = d["default"]
+        if kind is bool:
+            default = default == "on"
+        elif kind in (int, float):
+            default = kind(default) if default != "" else None
+        out.append((d["keyword"], kind, default))
+    return tuple(out)
+
+
+#: The study table's columns: (name, type, default), the batch's own and every declared calibration setting.
+STUDY_COLUMNS = _OWN_COLUMNS[:4] + _declared_columns() + _OWN_COLUMNS[4:]
+#: The columns handed to hooke.calibrate as keywords.
+CALIBRATION_COLUMNS = tuple(c for c, _, _ in _declared_columns())
 
 #: The results table's columns, in order.
 RESULT_COLUMNS = (
@@ -74,6 +96,15 @@ def _value(text, kind, default, where, column):
         if v != v or v in (float("inf"), float("-inf")):
             raise StudyError(f"{where}: column '{column}' is '{text}', not a finite number")
         return v
+    if kind is int:
+        try:
+            return int(text)
+        except ValueError:
+            raise StudyError(f"{where}: column '{column}' is '{text}', not an integer") from None
+    if kind is bool:
+        if text.lower() not in ("on", "off", "true", "false", "1", "0"):
+            raise StudyError(f"{where}: column '{column}' is '{text}', not on or off")
+        return text.lower() in ("on", "true", "1")
     return text
 
 
@@ -216,7 +247,10 @@ def run_job(job, out_dir):
                                                strain=job["strain"], density=job["density"])
                 result["held_out_rms"] = report.get("held_out_relative_l2_rms", "")
             else:
-                model = hooke.calibrate(mesh, material, job["method"], density=job["density"])
+                options = {c: job[c] for c in CALIBRATION_COLUMNS}
+                if not job["strain_range"]:
+                    del options["law"]  # then only the material's: the FEM law of method fem
+                model = hooke.calibrate(mesh, material, **options)
         result["method_used"] = model.method
         loads = [name.strip() for name in job["loads"].replace(",", ";").split(";") if name.strip()]
         cases = hooke.certify(model, job["strain"], loads=loads)

@@ -8,6 +8,7 @@ PYBIND11_MODULE(_hooke, m) {
   m.doc() = "hooke: mass-spring models calibrated from Young's modulus and Poisson's ratio (compiled core)";
   m.attr("__version__") = std::string(hooke::kVersion);
   hooke::python::define_error(m);
+  hooke::python::define_settings(m);
   hooke::python::define_mesh(m);
   hooke::python::define_material(m);
   hooke::python::define_calibrated_model(m);

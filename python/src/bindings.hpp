@@ -6,6 +6,7 @@
 namespace hooke::python {
 
 void define_error(pybind11::module_& m);
+void define_settings(pybind11::module_& m);
 void define_mesh(pybind11::module_& m);
 void define_material(pybind11::module_& m);
 void define_calibrated_model(pybind11::module_& m);

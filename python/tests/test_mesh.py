@@ -94,7 +94,7 @@ def test_tetrahedralize_a_closed_surface_and_calibrate_on_it():
 
 def test_tetrahedralize_refusals_name_the_cause():
     cube = hooke.cube_surface(3, 1.0)
-    with pytest.raises(hooke.InvalidArgument, match="unknown tetrahedralize option 'sise'"):
+    with pytest.raises(hooke.InvalidArgument, match=r"unknown setting 'sise' \(known: mesher, size"):
         hooke.tetrahedralize(cube, sise=0.1)
     with pytest.raises(hooke.InvalidArgument, match="not both"):
         hooke.tetrahedralize(cube, size=0.1, max_volume=1e-3)

@@ -65,5 +65,5 @@ run_fails("a model on another mesh" "do not match" "" simulate ${MESHES}/cylinde
           -o ${OUT}/sim_other)
 run_fails("--model with --young" "drop --young" "" compare --model ${OUT}/m.json --young 100 --strain 0.01)
 run_fails("an unknown extension" "extension" ${OUT}/m.txt calibrate ${mesh} --young 14630 --poisson 0.3 -o ${OUT}/m.txt)
-run_fails("an unknown method" "unknown model method" ${OUT}/x.json calibrate ${mesh} --young 1 --poisson 0.3
+run_fails("an unknown method" "unknown method 'springy'" ${OUT}/x.json calibrate ${mesh} --young 1 --poisson 0.3
           --method springy -o ${OUT}/x.json)

@@ -3,9 +3,11 @@
 // failed recalibrations that change nothing, script settings.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <hooke/calibrate/model_factory.hpp>
+#include <hooke/calibrate/model_settings.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/interactive/live_simulation.hpp>
 #include <hooke/interactive/physics_loop.hpp>
@@ -13,6 +15,7 @@
 #include <hooke/model/problem.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
 #include <iostream>
+#include <map>
 #include <thread>
 #include "interactive/support.hpp"
 
@@ -156,6 +159,32 @@ TEST(ApplySetting, ParsesAndRefuses) {
   EXPECT_THROW(apply_setting(s, "young", "1e4x"), InvalidArgument);
   EXPECT_THROW(apply_setting(s, "gravity", "maybe"), InvalidArgument);
   EXPECT_THROW(apply_setting(s, "integrator", "rk4"), InvalidArgument);
+}
+
+// The viewer's scripts take every declared live model setting (its panel draws one control per row): each is set
+// at a value other than its default, lands in the settings, and a live simulation recalibrates with it.
+TEST(ApplySetting, EveryLiveModelSettingIsASetKey) {
+  const std::map<std::string, std::string> values = {
+      {"method", "any-nu-tet"}, {"density", "1100"},      {"spring-exponent", "0.5"}, {"volume-exponent", "-1"},
+      {"scheme", "B"},          {"anchor-law", "tensor"}, {"volume-force", "energy"}};
+  const auto rows = calibrate::model_settings();
+  ASSERT_FALSE(live_model_settings().empty());
+  LiveSettings s = settings("lloyd-tet", 0.3);
+  LiveSimulation sim(calibrate::calibrate_model(cylinder(), s.material, s.model), s);
+  for (const hooke::settings::Description& d : live_model_settings()) {
+    ASSERT_TRUE(values.count(d.name)) << d.name << " has no test value here";
+    const auto row = std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r.name == d.name; });
+    apply_setting(s, d.name, values.at(d.name));
+    EXPECT_EQ(row->get(s.model), values.at(d.name)) << d.name;
+  }
+  sim.apply(s);
+  EXPECT_EQ(sim.model().method, "any-nu-tet");
+  EXPECT_EQ(sim.model().springs.spring_exponent, 0.5);
+  EXPECT_EQ(sim.model().springs.volume_exponent, -1.0);
+  EXPECT_EQ(sim.model().density, 1100.0);
+  EXPECT_THROW(apply_setting(s, "density", "0"), InvalidArgument);  // the declared range, as on the command line
+  EXPECT_THROW(apply_setting(s, "spring-exponent", "9"), InvalidArgument);
+  EXPECT_THROW(apply_setting(s, "method", "lloyd"), InvalidArgument);
 }
 
 // A model file with a method hooke calibrates is remade by it when the material changes (the viewer's sliders on

@@ -1,7 +1,9 @@
-// hooke.calibrate / methods / method_equation: a model from a mesh and a material by method name.
+// hooke.calibrate / methods / method_equation: a model from a mesh, a material and the calibration settings.
 #include <pybind11/stl.h>
 #include <bindings.hpp>
+#include <core/settings.hpp>
 #include <hooke/calibrate/model_factory.hpp>
+#include <hooke/experiments/calibration.hpp>
 
 namespace py = pybind11;
 
@@ -14,19 +16,14 @@ void define_model_factory(py::module_& m) {
         "Where the constants of `method` come from (paper and equation).");
   m.def(
       "_calibrate",
-      [](const mesh::Mesh& mesh, const material::Material& material, const std::string& method, double density,
-         const mesh::TetrahedralizeOptions& tetrahedralize, double spring_exponent, double volume_exponent) {
-        calibrate::ModelOptions o;
-        o.method = method;
-        o.density = density;
-        o.tetrahedralize = tetrahedralize;
-        o.spring_exponent = spring_exponent;
-        o.volume_exponent = volume_exponent;
+      [](const mesh::Mesh& mesh, const material::Material& material, const py::dict& options) {
+        experiments::CalibrationSettings s;
+        settings::apply(experiments::calibration_settings(), s, given_settings(options), settings::kCalibrate);
         py::gil_scoped_release release;
-        return calibrate::calibrate_model(mesh, material, o);
+        return experiments::calibrate_with(mesh, material, s);
       },
-      py::arg("mesh"), py::arg("material"), py::arg("method"), py::arg("density"), py::arg("tetrahedralize"),
-      py::arg("spring_exponent") = 1.0, py::arg("volume_exponent") = 1.0);
+      py::arg("mesh"), py::arg("material"), py::arg("options"),
+      "hooke.calibrate's core: `options` maps setting names (hooke._settings('calibrate')) to values.");
 }
 
 }  // namespace hooke::python

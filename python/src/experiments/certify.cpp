@@ -36,17 +36,6 @@ void define_certify(py::module_& m) {
       "per case max / mean node error (m) and relative L2. With strain_range > 0: the same cases under displacement "
       "control at 1 % and at strain_range against the FEM of `law`, each with its force_error. Stored in "
       "model.certificate (written with the model).");
-  m.def(
-      "_fit_term_law",
-      [](const calibrate::CalibratedModel& model, const std::string& law, double strain_range, bool automatic) {
-        experiments::TermLawFitOptions o;
-        o.law = material::law_from_name(law);
-        o.strain_range = strain_range;
-        py::gil_scoped_release release;
-        return automatic && !model.surface ? experiments::choose_for_range(model, o)
-                                           : experiments::with_fitted_law(model, o);
-      },
-      py::arg("model"), py::arg("law"), py::arg("strain_range"), py::arg("automatic"));
 }
 
 }  // namespace hooke::python

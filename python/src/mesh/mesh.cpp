@@ -4,6 +4,8 @@
 #include <pybind11/stl/filesystem.h>
 #include <bindings.hpp>
 #include <core/arrays.hpp>
+#include <core/settings.hpp>
+#include <hooke/calibrate/model_settings.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/io/mesh_io.hpp>
@@ -113,34 +115,10 @@ void define_mesh(py::module_& m) {
       py::arg("surface"), py::arg("centre"), py::arg("layers"),
       "Tets filling a closed surface star-shaped about `centre` (m), in `layers` layers towards it.");
   m.def("_tetrahedralize_options", [](const py::kwargs& kwargs) {
-    // The library's defaults for every option not given (the one place they are written).
-    mesh::TetrahedralizeOptions o;
-    double size = 0.0, max_volume = 0.0;
-    for (const auto& [key, value] : kwargs) {
-      const std::string k = py::str(key);
-      if (k == "size")
-        size = value.cast<double>();
-      else if (k == "mesher")
-        o.mesher = mesh::mesher_from_name(value.cast<std::string>());
-      else if (k == "max_volume")
-        max_volume = value.cast<double>();
-      else if (k == "surface_mesh")
-        o.surface = mesh::surface_meshing_from_name(value.cast<std::string>());
-      else if (k == "quality")
-        o.min_radius_ratio = value.cast<double>();
-      else if (k == "fineness")
-        o.fineness = value.cast<double>();
-      else if (k == "grading")
-        o.grading = value.cast<double>();
-      else if (k == "optimisation_steps")
-        o.optimisation_steps = value.cast<int>();
-      else
-        throw InvalidArgument("unknown tetrahedralize option '" + k +
-                              "' (valid: mesher, size, max_volume, surface_mesh, quality, fineness, grading, "
-                              "optimisation_steps)");
-    }
-    mesh::set_mesh_size(o, size, max_volume);
-    return o;
+    // The declared tet settings (calibrate::model_settings, settings::kMesh), the library's defaults for the rest.
+    calibrate::ModelOptions o;
+    settings::apply(calibrate::model_settings(), o, given_settings(kwargs), settings::kMesh);
+    return o.tetrahedralize;
   });
   py::class_<mesh::TetrahedralizeOptions>(m, "_TetrahedralizeOptions");
   m.def(

@@ -20,6 +20,7 @@ void require_fittable(const calibrate::CalibratedModel& model, const TermLawFitO
   if (!(o.strain_range > 0.0 && o.strain_range <= 0.5))
     throw InvalidArgument("the strain range must be in (0, 0.5], not " + std::to_string(o.strain_range));
   if (o.loads.empty()) throw InvalidArgument("fit_term_law: no load case");
+  if (o.refinements < 0) throw InvalidArgument("fit_term_law: refinements must be >= 0");
   if (model.surface || calibrate::model_kind(model) == calibrate::ModelKind::kFem)
     throw InvalidArgument("a term law is fitted to spring models only, not to '" + model.method + "'");
 }
@@ -105,8 +106,10 @@ TermLawFit fit_term_law(const calibrate::CalibratedModel& model, const TermLawFi
   for (double m : green ? std::vector<double>{3.0, 2.0, 1.0} : std::vector<double>{1.0, 0.0, -1.0})
     for (double q : green ? std::vector<double>{2.0, 1.0, 0.0, -1.0} : std::vector<double>{1.0, 0.0, -1.0, -2.0})
       if (const double e = error_at(m, q); e < best) std::tie(best, best_m, best_q) = std::tuple(e, m, q);
-  // Pattern search from the best grid point: move while a neighbour improves, then halve the step.
-  for (double step = 0.5; step >= 0.125; step *= 0.5) {
+  // Pattern search from the best grid point: move while a neighbour improves, then halve the step (from 1/2, the
+  // number of steps options.refinements: 3 ends at 1/8).
+  for (int level = 0; level < options.refinements; ++level) {
+    const double step = std::ldexp(0.5, -level);
     for (bool moved = true; moved;) {
       moved = false;
       for (const auto& [dm, dq] :

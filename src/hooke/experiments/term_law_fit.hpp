@@ -16,6 +16,8 @@ struct TermLawFitOptions {
   double strain_range = 0.2;                       ///< S: fitted on the cases at S/2 and S (> 0, <= 0.5)
   /// the load cases, each under displacement control (the top moved by strain x height)
   std::vector<model::LoadKind> loads = {model::LoadKind::kStretch, model::LoadKind::kCompress, model::LoadKind::kShear};
+  /// The pattern search's step sizes after the grid: 1/2, 1/4, ... (3: down to 1/8; 0: the grid alone), >= 0.
+  int refinements = 3;
 };
 
 /// What the fit found.
@@ -37,8 +39,8 @@ double term_law_error(const calibrate::CalibratedModel& model, const TermLawFitO
 /// Fits (m, q) of a springs model (a calibration method's, or a file's springs and volume terms) on its own mesh and
 /// material: the FEM references are solved once; a coarse grid of (m, q) is measured (m in {1, 0, -1}, q in
 /// {1, 0, -1, -2}; for St. Venant-Kirchhoff m in {3, 2, 1}, q in {2, 1, 0, -1}), then a pattern search refines the best
-/// to 1/8 (m in [-4, 4], q in [-6, 4]). Returns the pair of least worst error; it is never worse than
-/// m = q = 1, which is always measured.
+/// to 1/8 (options.refinements) (m in [-4, 4], q in [-6, 4]). Returns the pair of least worst error; it is never worse
+/// than m = q = 1, which is always measured.
 /// @throws InvalidArgument for a surface or FEM model, a 2D model without springs, or a strain outside (0, 0.5];
 ///   SolverFailure when the FEM has no stable equilibrium on a case (the law cannot reach that strain)
 TermLawFit fit_term_law(const calibrate::CalibratedModel& model, const TermLawFitOptions& options);

@@ -225,13 +225,16 @@ void LiveSimulation::apply(const LiveSettings& s) {
   const LiveSettings& old = m->settings;
   // "file" keeps the model's own constants: a new material would show in the settings but not in the body.
   const bool own = calibrate::model_kind_of_method(s.model.method) == calibrate::ModelKind::kFile;
-  if (own && (s.material != m->model.material || s.model.density != m->model.density ||
+  const bool new_law =
+      s.model.spring_exponent != old.model.spring_exponent || s.model.volume_exponent != old.model.volume_exponent;
+  if (own && (s.material != m->model.material || s.model.density != m->model.density || new_law ||
               !same_surface(s.model.surface, old.model.surface)))
-    throw InvalidArgument("this model's constants are its own (method '" + m->model.method +
-                          "', not one hooke calibrates): a new E, nu, density or surface option needs a method");
+    throw InvalidArgument(
+        "this model's constants are its own (method '" + m->model.method +
+        "', not one hooke calibrates): a new E, nu, density, term law or surface option needs a method");
   const bool recalibrate =
       !own && (s.model.method != old.model.method || s.material != old.material ||
-               s.model.density != old.model.density || !same_surface(s.model.surface, old.model.surface));
+               s.model.density != old.model.density || new_law || !same_surface(s.model.surface, old.model.surface));
   // Build everything new first (strong guarantee), then swap.
   std::optional<calibrate::CalibratedModel> model;
   calibrate::BuiltModel built = m->built;

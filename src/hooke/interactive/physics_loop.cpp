@@ -3,6 +3,7 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <hooke/calibrate/model_settings.hpp>
 #include <hooke/core/atomic_file.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/quantile.hpp>
@@ -86,15 +87,23 @@ void pace(Clock::time_point& next, double period) {
 
 }  // namespace
 
+const std::vector<settings::Description>& live_model_settings() {
+  static const std::vector<settings::Description> rows =
+      settings::describe(calibrate::model_settings(), settings::kView);
+  return rows;
+}
+
 void apply_setting(LiveSettings& s, const std::string& key, const std::string& value) {
   if (key == "young") {
     s.material.youngs_modulus = solve::setting_number(key, value);
   } else if (key == "poisson") {
     s.material.poisson_ratio = solve::setting_number(key, value);
-  } else if (key == "density") {
-    s.model.density = solve::setting_number(key, value);
-  } else if (key == "method") {
-    s.model.method = value;
+  } else if (key == "method" && value == calibrate::model_kind_name(calibrate::ModelKind::kFile)) {
+    s.model.method = value;  // keep a model file's own constants
+  } else if (const std::string name = settings::canonical_name(key);
+             std::any_of(live_model_settings().begin(), live_model_settings().end(),
+                         [&](const settings::Description& d) { return d.name == name; })) {
+    settings::set(calibrate::model_settings(), s.model, name, value);
   } else if (key == "haptic-stiffness") {
     s.haptic_stiffness = haptic_stiffness_from_name(value);
   } else if (key == "haptic-curvature") {

@@ -10,6 +10,7 @@
 #include <condition_variable>
 #include <deque>
 #include <functional>
+#include <hooke/core/settings.hpp>
 #include <hooke/interactive/haptic_model.hpp>
 #include <hooke/interactive/live_simulation.hpp>
 #include <hooke/interactive/script.hpp>
@@ -152,12 +153,16 @@ class PhysicsLoop {
   double m_drag_t0 = 0.0, m_drag_t1 = -1.0;
 };
 
-/// Carries out one `set` script command on settings (young, poisson, density, method, haptic-stiffness,
-/// haptic-curvature on|off, the dynamics
-/// fields: dt, gravity, damping-mass, ...; solve::dynamics_fields, and the integrator's: integrator, qn-iterations,
-/// cg-tolerance, ...; solve::simulator_fields).
+/// Carries out one `set` script command on settings (young, poisson, the live model settings: method, density, ...;
+/// live_model_settings, haptic-stiffness, haptic-curvature on|off, the dynamics fields: dt, gravity, damping-mass, ...;
+/// solve::dynamics_fields, and the integrator's: integrator, qn-iterations, cg-tolerance, ...;
+/// solve::simulator_fields).
 /// @throws InvalidArgument for a value that does not parse or is out of range
 void apply_setting(LiveSettings& settings, const std::string& key, const std::string& value);
+
+/// The model settings the viewer changes while it runs (calibrate::model_settings() rows of settings::kView: method,
+/// density, term law, surface options), each a `set` key and a panel control; changing one recalibrates.
+const std::vector<settings::Description>& live_model_settings();
 
 /// Writes `stats` plus `extra` (JSON members of numbers) as a JSON object to `path` (atomically).
 /// @throws IoError when it cannot be written

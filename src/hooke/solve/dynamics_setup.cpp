@@ -1,6 +1,7 @@
 #include <charconv>
 #include <cmath>
 #include <hooke/core/error.hpp>
+#include <hooke/core/settings.hpp>
 #include <hooke/solve/dynamics_setup.hpp>
 #include <string>
 #include <utility>
@@ -23,17 +24,11 @@ constexpr DynamicsField kFields[] = {
 std::span<const DynamicsField> dynamics_fields() { return kFields; }
 
 double setting_number(std::string_view name, std::string_view text) {
-  double v = 0.0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
-    throw InvalidArgument("set " + std::string(name) + ": '" + std::string(text) + "' is not a finite number");
-  return v;
+  return settings::parse_number("set " + std::string(name), text);
 }
 
 bool setting_flag(std::string_view name, std::string_view text) {
-  if (text != "on" && text != "off")
-    throw InvalidArgument("set " + std::string(name) + " takes on or off, not '" + std::string(text) + "'");
-  return text == "on";
+  return settings::parse_flag("set " + std::string(name), text);
 }
 
 bool set_dynamics_field(DynamicsSetup& setup, std::string_view name, std::string_view text) {

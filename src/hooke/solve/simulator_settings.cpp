@@ -1,17 +1,13 @@
 #include <charconv>
 #include <hooke/core/error.hpp>
+#include <hooke/core/settings.hpp>
 #include <hooke/solve/dynamics_setup.hpp>
 #include <hooke/solve/simulator_settings.hpp>
-#include <sstream>
 
 namespace hooke::solve {
 namespace {
 
-std::string number_text(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
+using settings::number_text;
 
 const SimulatorField kFields[] = {
     {"integrator",
@@ -73,11 +69,7 @@ bool set_simulator_field(SimulatorOptions& options, std::string_view name, std::
 }
 
 int setting_integer(std::string_view name, std::string_view text) {
-  int v = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || end != text.data() + text.size())
-    throw InvalidArgument("set " + std::string(name) + ": '" + std::string(text) + "' is not an integer");
-  return v;
+  return settings::parse_integer("set " + std::string(name), text);
 }
 
 }  // namespace hooke::solve
