@@ -35,7 +35,7 @@ extern std::ostream* testout;
 namespace hooke::mesh {
 namespace {
 
-std::string where(const Mesh& m) { return m.source.empty() ? std::string("the surface") : m.source; }
+std::string surface_name(const Mesh& m) { return m.source.empty() ? std::string("the surface") : m.source; }
 
 std::string fixed(double v, int digits) {
   char buffer[64];
@@ -104,7 +104,7 @@ std::mutex& netgen_mutex() {
 
 void require_ok(nglib::Ng_Result result, const char* stage, const Mesh& surface) {
   if (result == nglib::NG_OK) return;
-  throw InvalidMesh("Netgen could not " + std::string(stage) + " of " + where(surface) + " (result " +
+  throw InvalidMesh("Netgen could not " + std::string(stage) + " of " + surface_name(surface) + " (result " +
                     std::to_string(static_cast<int>(result)) +
                     "); try --surface keep, a smaller --size, or repair the surface");
 }
@@ -146,13 +146,13 @@ Mesh netgen_volume(const Mesh& surface, const TetrahedralizeOptions& o) {
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {
-    throw InvalidMesh("Netgen could not mesh " + where(surface) + ": " + e.what() +
+    throw InvalidMesh("Netgen could not mesh " + surface_name(surface) + ": " + e.what() +
                       (o.surface == SurfaceMeshing::kKeep
                            ? "; try --surface remesh, or repair the surface"
                            : "; try --surface keep, another --size, or repair the surface"));
   }
   const int np = nglib::Ng_GetNP(session.mesh()), ne = nglib::Ng_GetNE(session.mesh());
-  if (ne == 0) throw InvalidMesh("Netgen made no tets of " + where(surface) + "; try a smaller --size");
+  if (ne == 0) throw InvalidMesh("Netgen made no tets of " + surface_name(surface) + "; try a smaller --size");
   RowMatX nodes(np, 3);
   for (int i = 0; i < np; ++i) {
     double p[3];
@@ -163,7 +163,7 @@ Mesh netgen_volume(const Mesh& surface, const TetrahedralizeOptions& o) {
   for (int e = 0; e < ne; ++e) {
     int pi[10];
     if (nglib::Ng_GetVolumeElement(session.mesh(), e + 1, pi) != nglib::NG_TET)
-      throw InvalidMesh("Netgen made an element other than a tet in " + where(surface));
+      throw InvalidMesh("Netgen made an element other than a tet in " + surface_name(surface));
     tets.row(e) << pi[0] - 1, pi[2] - 1, pi[1] - 1, pi[3] - 1;
   }
   return make_mesh(ElementKind::kTet, std::move(nodes), std::move(tets), surface.source);
@@ -227,7 +227,7 @@ Mesh tetrahedralize(Mesh surface, const TetrahedralizeOptions& options, Tetrahed
   const auto start = std::chrono::steady_clock::now();
   check_options(options);
   if (surface.kind != ElementKind::kSurfaceTriangle)
-    throw InvalidMesh("tetrahedralizing needs a closed triangle surface; " + where(surface) + " holds " +
+    throw InvalidMesh("tetrahedralizing needs a closed triangle surface; " + surface_name(surface) + " holds " +
                       std::string(element_kind_name(surface.kind)) + " elements");
   TetrahedralizeReport r;
   r.backend = mesher.name;
@@ -240,7 +240,7 @@ Mesh tetrahedralize(Mesh surface, const TetrahedralizeOptions& options, Tetrahed
   require_no_self_intersection(surface);
   const double diagonal = bounding_box_diagonal(surface);
   if (diagonal > 10.0)
-    log_warning(where(surface) + " is " + general(diagonal) +
+    log_warning(surface_name(surface) + " is " + general(diagonal) +
                 " m across: if its coordinates are millimetres, give --unit mm (hooke works in metres)");
   if (r.options.max_size == 0.0) r.options.max_size = diagonal / 25.0;
 
@@ -259,18 +259,18 @@ Mesh tetrahedralize(Mesh surface, const TetrahedralizeOptions& options, Tetrahed
   r.slivers = tet_quality(tets, kSliverRadiusRatio).below_floor;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (report) *report = r;
-  log(LogLevel::kInfo, "tetrahedralized " + where(surface) + ": " + r.summary());
+  log(LogLevel::kInfo, "tetrahedralized " + surface_name(surface) + ": " + r.summary());
   if (r.slivers > 0 && r.options.min_radius_ratio == 0.0)
-    log_warning(std::to_string(r.slivers) + " of the " + std::to_string(r.tets) + " tets of " + where(surface) +
+    log_warning(std::to_string(r.slivers) + " of the " + std::to_string(r.tets) + " tets of " + surface_name(surface) +
                 " are slivers (radius ratio below " + fixed(kSliverRadiusRatio, 2) + ", worst " +
                 fixed(r.quality.min_radius_ratio, 4) + " at tet " + std::to_string(r.quality.worst_element) +
                 "); --quality Q refuses a mesh with tets below Q");
   if (std::abs(r.volume_error) > r.options.max_volume_error)
-    throw InvalidMesh("the tets of " + where(surface) + " enclose " + fixed(100.0 * r.volume_error, 2) +
+    throw InvalidMesh("the tets of " + surface_name(surface) + " enclose " + fixed(100.0 * r.volume_error, 2) +
                       " % more volume than the surface (allowed: " + fixed(100.0 * r.options.max_volume_error, 2) +
                       " %); give a smaller --size, or --surface keep");
   if (r.quality.below_floor > 0)
-    throw InvalidMesh(std::to_string(r.quality.below_floor) + " tets of the mesh of " + where(surface) +
+    throw InvalidMesh(std::to_string(r.quality.below_floor) + " tets of the mesh of " + surface_name(surface) +
                           " have a radius ratio below the quality floor " + fixed(r.options.min_radius_ratio, 3) +
                           " (worst: tet " + std::to_string(r.quality.worst_element) + ", " +
                           fixed(r.quality.min_radius_ratio, 4) +

@@ -9,7 +9,7 @@
 namespace hooke::solve {
 namespace {
 
-constexpr DynamicsField kFields[] = {
+constexpr DynamicsField kDynamicsFields[] = {
     {"dt", "Time step, s (the viewer runs one step per dt of wall time)", &DynamicsSetup::dt, nullptr},
     {"gravity", "Gravity 9.81 m/s^2 down the vertical axis (y in 2D, z in 3D)", nullptr, &DynamicsSetup::gravity},
     {"damping-mass", "Rayleigh alpha, 1/s", &DynamicsSetup::damping_mass, nullptr},
@@ -21,7 +21,7 @@ constexpr DynamicsField kFields[] = {
 
 }  // namespace
 
-std::span<const DynamicsField> dynamics_fields() { return kFields; }
+std::span<const DynamicsField> dynamics_fields() { return kDynamicsFields; }
 
 double setting_number(std::string_view name, std::string_view text) {
   return settings::parse_number("set " + std::string(name), text);
@@ -32,7 +32,7 @@ bool setting_flag(std::string_view name, std::string_view text) {
 }
 
 bool set_dynamics_field(DynamicsSetup& setup, std::string_view name, std::string_view text) {
-  for (const DynamicsField& f : kFields) {
+  for (const DynamicsField& f : kDynamicsFields) {
     if (f.name != name) continue;
     if (f.number)
       setup.*f.number = setting_number(name, text);

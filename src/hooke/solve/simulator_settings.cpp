@@ -9,7 +9,7 @@ namespace {
 
 using settings::number_text;
 
-const SimulatorField kFields[] = {
+const SimulatorField kSimulatorFields[] = {
     {"integrator",
      "quasi-newton (every model at a fixed budget per step, the real-time default), implicit-euler (Newton to "
      "convergence), implicit-euler-linearised (one Newton iteration, Baraff & Witkin), local-global (springs only; "
@@ -57,10 +57,10 @@ const SimulatorField kFields[] = {
 
 }  // namespace
 
-std::span<const SimulatorField> simulator_fields() { return kFields; }
+std::span<const SimulatorField> simulator_fields() { return kSimulatorFields; }
 
 bool set_simulator_field(SimulatorOptions& options, std::string_view name, std::string_view text) {
-  for (const SimulatorField& f : kFields)
+  for (const SimulatorField& f : kSimulatorFields)
     if (f.name == name) {
       f.set(options, text);
       return true;

@@ -7,12 +7,12 @@
 namespace hooke::surface {
 
 namespace {
-constexpr NameTable<AnchorLaw, 3> kNames{
+constexpr NameTable<AnchorLaw, 3> kAnchorLawNames{
     "anchor law", {{{AnchorLaw::kSingle, "single"}, {AnchorLaw::kBlend, "blend"}, {AnchorLaw::kTensor, "tensor"}}}};
 }  // namespace
 
-std::string_view anchor_law_name(AnchorLaw law) { return kNames.name(law); }
-AnchorLaw anchor_law_from_name(std::string_view name) { return kNames.from_name(name); }
+std::string_view anchor_law_name(AnchorLaw law) { return kAnchorLawNames.name(law); }
+AnchorLaw anchor_law_from_name(std::string_view name) { return kAnchorLawNames.from_name(name); }
 
 AnchorBlock::AnchorBlock(VecX anchors, const RowMatX& cones, VecX k_normal, VecX k_shear, AnchorLaw law)
     : m_anchors(std::move(anchors)), m_k_normal(std::move(k_normal)), m_k_shear(std::move(k_shear)), m_law(law) {

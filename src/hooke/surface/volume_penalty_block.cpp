@@ -81,13 +81,13 @@ void fill_weights(const Eigen::Ref<const VecX>& x, const Interaction& in, VecX& 
 }  // namespace
 
 namespace {
-constexpr NameTable<VolumeForce, 3> kNames{
+constexpr NameTable<VolumeForce, 3> kVolumeForceNames{
     "volume force",
     {{{VolumeForce::kNodal, "nodal"}, {VolumeForce::kPrinted, "printed"}, {VolumeForce::kEnergy, "energy"}}}};
 }  // namespace
 
-std::string_view volume_force_name(VolumeForce force) { return kNames.name(force); }
-VolumeForce volume_force_from_name(std::string_view name) { return kNames.from_name(name); }
+std::string_view volume_force_name(VolumeForce force) { return kVolumeForceNames.name(force); }
+VolumeForce volume_force_from_name(std::string_view name) { return kVolumeForceNames.from_name(name); }
 
 VecX interaction_weights(const Eigen::Ref<const VecX>& x, const Interaction& interaction) {
   model::require_valid(interaction);
