@@ -142,7 +142,7 @@ TEST(StackedForceOperator, EqualsEachCasesBasisForAnyGrouping) {
     const identify::ParameterLayout layout = identify::parameter_layout(mesh, p);
     std::vector<identify::ReferenceCase> cases;
     for (int c = 0; c < 5; ++c) {
-      identify::ReferenceCase rc{"c" + std::to_string(c), perturbed(mesh, 2e-4, 20 + c), perturbed(mesh, 1.0, 40 + c),
+      identify::ReferenceCase rc{std::string("c").append(std::to_string(c)), perturbed(mesh, 2e-4, 20 + c), perturbed(mesh, 1.0, 40 + c),
                                  std::vector<char>(static_cast<std::size_t>(mesh.dim() * mesh.node_count()), 0), false};
       for (std::size_t k = static_cast<std::size_t>(c); k < rc.fixed_dofs.size(); k += 3 + c) rc.fixed_dofs[k] = 1;
       cases.push_back(rc);
