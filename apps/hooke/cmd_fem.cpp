@@ -21,7 +21,7 @@ namespace {
 
 struct FemOptions {
   ModelInput in;
-  std::string output, csv, load = "stretch", law = "linear", plane = "stress";
+  std::string output, csv, load = "stretch", law = "linear", plane = "stress", control = "traction";
   double traction = std::nan(""), strain = std::nan("");
 };
 
@@ -51,16 +51,28 @@ int run_fem(const FemOptions& o) {
   mat.plane = material::plane_from_name(o.plane);
   material::validate(mat);
   const model::LoadKind kind = model::load_kind_from_name(o.load);
+  const model::LoadControl control = model::load_control_from_name(o.control);
   if (std::isnan(o.traction) == std::isnan(o.strain))
     throw InvalidArgument("give exactly one of --traction and --strain");
-  const double traction = std::isnan(o.strain) ? o.traction : solve::traction_for_strain(m, {mat}, kind, o.strain);
+  model::LoadCase lc;
+  double traction = 0.0;
+  if (control == model::LoadControl::kDisplacement) {  // the top moved rigidly by strain x height
+    if (std::isnan(o.strain) || !(o.strain > 0.0))
+      throw InvalidArgument("--control displacement needs --strain S > 0 (the top moved by S x height)");
+    lc = model::make_displacement_case(m, kind, 0.0, mat.thickness);
+    lc.displacement = o.strain * lc.height;
+  } else {
+    traction = std::isnan(o.strain) ? o.traction : solve::traction_for_strain(m, {mat}, kind, o.strain);
+    lc = model::make_load_case(m, kind, traction, mat.thickness);
+  }
 
   const auto model = fem::elastic_model(m, {mat});
   model::Problem problem = model::make_problem(model);
-  const model::LoadCase lc = model::make_load_case(m, kind, traction, mat.thickness);
   model::apply(lc, problem);
+  solve::StaticOptions statics;
+  statics.ramp_prescribed = true;  // a press or pull reached in load steps, never in one jump
   const solve::StaticResult r =
-      mat.law == material::Law::kLinear ? solve::linear_static(problem) : solve::static_equilibrium(problem);
+      mat.law == material::Law::kLinear ? solve::linear_static(problem) : solve::static_equilibrium(problem, statics);
   const solve::SolveReport& rep = r.report;
 
   std::printf("hooke fem: %s\n", o.in.mesh_path.c_str());
@@ -69,8 +81,12 @@ int run_fem(const FemOptions& o) {
   std::printf("  material  %s, E = %g Pa, nu = %g%s\n", std::string(material::law_name(mat.law)).c_str(),
               mat.youngs_modulus, mat.poisson_ratio,
               m.dim() == 2 ? (", plane " + o.plane + ", t = " + std::to_string(mat.thickness) + " m").c_str() : "");
-  std::printf("  load      %s, traction %.6g Pa on %.6g m^2 of top boundary, height %.6g m, %zu clamped nodes\n",
-              o.load.c_str(), traction, lc.top_area, lc.height, lc.fixed_nodes.size());
+  if (control == model::LoadControl::kDisplacement)
+    std::printf("  load      %s, top moved %.6g m (%.4g %% of height %.6g m), %zu clamped nodes\n", o.load.c_str(),
+                lc.displacement, 100.0 * o.strain, lc.height, lc.fixed_nodes.size());
+  else
+    std::printf("  load      %s, traction %.6g Pa on %.6g m^2 of top boundary, height %.6g m, %zu clamped nodes\n",
+                o.load.c_str(), traction, lc.top_area, lc.height, lc.fixed_nodes.size());
   std::printf("  solve     %s: %s\n", std::string(solve::status_name(rep.status)).c_str(), rep.message.c_str());
   std::printf("  timing    total %.4f s (assembly %.4f s, factorisation %.4f s, %s)\n", rep.solve_seconds,
               rep.assembly_seconds, rep.factorization_seconds, rep.backend.c_str());
@@ -85,6 +101,8 @@ int run_fem(const FemOptions& o) {
   const double mean_top = model::mean_top_displacement(lc, problem, r.positions);
   std::printf("  result    max displacement %.6g m, mean top displacement along the load %.6g m (%.2f %% of height)\n",
               max_u, mean_top, 100.0 * mean_top / lc.height);
+  const VecX reaction = model::top_reaction(lc, problem, r.positions);
+  std::printf("  force     on the top %.6g N (|F| %.6g N)\n", reaction.dot(lc.direction), reaction.norm());
   write_outputs(o, m, u, problem.external_force);
   return 0;
 }
@@ -99,7 +117,11 @@ Action add_fem_command(CLI::App& app) {
   cmd->add_option("--load", o->load, "Load case: stretch, compress or shear")->capture_default_str();
   cmd->add_option("--traction", o->traction, "Traction on the top boundary, Pa");
   cmd->add_option("--strain", o->strain,
-                  "Set the traction so that the linear FEM's mean top displacement is S x height");
+                  "Traction control: set the traction so that the linear FEM's mean top displacement is S x height; "
+                  "displacement control: move the top by S x height");
+  cmd->add_option("--control", o->control,
+                  "traction (a dead load on the top) or displacement (the top moved rigidly; the force on it reported)")
+      ->capture_default_str();
   cmd->add_option("--material", o->law, "Constitutive law: linear, stvk or neohookean")->capture_default_str();
   cmd->add_option("-o,--output", o->output, "Output .vtu with displacement")->required();
   cmd->add_option("--csv", o->csv, "Also write per-node displacements as CSV");

@@ -28,6 +28,15 @@ execute_process(COMMAND ${HOOKE} fem ${MESHES}/cylinder.msh --young 14630 --pois
 if(NOT rc EQUAL 2 OR NOT err MATCHES "Poisson" OR EXISTS ${OUT}/bad.vtu)
   message(FATAL_ERROR "nu = 0.5 must fail with exit code 2 and write nothing (got ${rc}: ${err})")
 endif()
+# Displacement control: a 40 % press of the Neo-Hookean cylinder reaches equilibrium, its top exactly 40 % down, and
+# the force on the top is reported.
+execute_process(COMMAND ${HOOKE} fem ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --material neohookean
+                        --load compress --strain 0.4 --control displacement -o ${OUT}/press.vtu
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "40.00 % of height" OR NOT out MATCHES "force     on the top -?[0-9]")
+  message(FATAL_ERROR "hooke fem --control displacement did not press 40 % and report the force (${rc})")
+endif()
 
 # hooke compare writes the VTU and the paper-style PNG (matplotlib through scripts/plot_figures.py).
 execute_process(COMMAND ${HOOKE} compare ${MESHES}/cylinder.msh --young 14630 --poisson 0.25 --method lloyd-tet
