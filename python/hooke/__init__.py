@@ -137,17 +137,33 @@ def stiffness(problem):
     return scipy.sparse.csr_matrix((data, indices, indptr), shape=shape)
 
 
-def reproduce(paper, out_dir, meshes=None):
-    """Runs a paper's experiments ("lloyd2007": Sec. 5, Figs. 1 and 3; "arnab2008": Tables 1-2, Figs. 8-12), writes
-    <out_dir>/<paper>.md, <paper>.json and the figure specs (figures/*.json; `hooke reproduce` renders them), and
-    returns the JSON report as a dict (every number of the report). `meshes`: the folder of the committed meshes
-    (default: the source tree's data/meshes)."""
+def reproduce(paper, out_dir, meshes=None, **options):
+    """Runs a paper's experiments as `hooke reproduce` does ("lloyd2007": Sec. 5, Figs. 1 and 3; "arnab2008": Tables
+    1-2, Figs. 8-12; "nu-range": every calibration method against the FEM over nu, small and large strain), writes
+    the report (<paper>.md, .json; nu-range: nu_range.md, nu_range.json, method_table.inc) and the figure specs
+    (figures/*.json; `hooke reproduce` renders them), and returns the JSON report as a dict (every number of the
+    report). `meshes`: the folder of the committed meshes (default: the source tree's data/meshes). nu-range takes
+    the study's options as keywords (`hooke reproduce nu-range --help`, dashes as underscores): poisson, methods,
+    triangle_methods, planes, study_meshes, loads, small_strain, large_strain."""
     import json
     import pathlib
 
     out = pathlib.Path(out_dir)
-    _hooke._reproduce(paper, out, pathlib.Path(meshes) if meshes else pathlib.Path(_hooke._default_mesh_dir))
-    return json.loads((out / (paper + ".json")).read_text())
+    mesh_dir = pathlib.Path(meshes) if meshes else pathlib.Path(_hooke._default_mesh_dir)
+    if paper != "nu-range":
+        if options:
+            raise TypeError("reproduce: %s takes no options (%s)" % (paper, ", ".join(sorted(options))))
+        _hooke._reproduce(paper, out, mesh_dir)
+        return json.loads((out / (paper + ".json")).read_text())
+    study = json.loads(_hooke._nu_range_default_options())
+    if "study_meshes" in options:
+        options["meshes"] = options.pop("study_meshes")
+    unknown = sorted(set(options) - set(study))
+    if unknown:
+        raise TypeError("reproduce: unknown nu-range option(s) %s (known: %s)" % (", ".join(unknown), ", ".join(sorted(study))))
+    study.update(options)
+    _hooke._reproduce(paper, out, mesh_dir, json.dumps(study))
+    return json.loads((out / "nu_range.json").read_text())
 
 
 def identify(mesh, material, params="auto", objective="positions", references=None, strain=0.01, held_out=4, seed=2007,

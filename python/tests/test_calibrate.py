@@ -99,6 +99,17 @@ def test_reproduce_arnab2008_returns_the_report_as_a_dict(tmp_path):
         hooke.reproduce("smith1999", tmp_path)
 
 
+def test_reproduce_nu_range_takes_the_studys_options(tmp_path, meshes):
+    report = hooke.reproduce("nu-range", tmp_path, meshes, poisson=[0.3], methods=["lloyd-tet", "any-nu-tet"],
+                             study_meshes=["cylinder_hole"], loads=["stretch"], large_strain=0.0)
+    assert (tmp_path / "nu_range.md").exists() and (tmp_path / "method_table.inc").exists()
+    rows = report["rows"]
+    assert {r["method"] for r in rows} == {"lloyd-tet", "any-nu-tet"}
+    assert all(r["poisson"] == 0.3 and r["load"] == "stretch" and 0.0 < r["relative_l2"] < 0.5 for r in rows)
+    with pytest.raises(TypeError, match="unknown nu-range option"):
+        hooke.reproduce("nu-range", tmp_path, nus=[0.3])
+
+
 def test_auto_picks_by_kind_and_plane_and_says_why():
     import pathlib
 

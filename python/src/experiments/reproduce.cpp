@@ -16,17 +16,26 @@ void define_reproduce(py::module_& m) {
   m.attr("_default_mesh_dir") = std::string(HOOKE_MESH_DIR);
   m.def(
       "_reproduce",
-      [](const std::string& paper, const std::filesystem::path& out_dir, const std::filesystem::path& mesh_dir) {
+      [](const std::string& paper, const std::filesystem::path& out_dir, const std::filesystem::path& mesh_dir,
+         const std::string& nu_range_options) {
         py::gil_scoped_release release;
+        if (paper == "nu-range") {
+          experiments::write_nu_range_report(
+              out_dir,
+              experiments::reproduce_nu_range(
+                  mesh_dir, nu_range_options.empty() ? experiments::NuRangeOptions{}
+                                                     : experiments::nu_range_options_from_json(nu_range_options)));
+          return;
+        }
         if (paper == "arnab2008") {
           experiments::write_arnab2008_report(out_dir, experiments::reproduce_arnab2008());
           return;
         }
         if (paper != "lloyd2007")
-          throw InvalidArgument("unknown paper '" + paper + "' (available: lloyd2007, arnab2008)");
+          throw InvalidArgument("unknown paper '" + paper + "' (available: lloyd2007, arnab2008, nu-range)");
         experiments::write_lloyd2007_report(out_dir, experiments::reproduce_lloyd2007(mesh_dir));
       },
-      py::arg("paper"), py::arg("out_dir"), py::arg("mesh_dir"));
+      py::arg("paper"), py::arg("out_dir"), py::arg("mesh_dir"), py::arg("nu_range_options") = "");
   // The nu-range study as independent tasks (hooke.batch): options, tasks and rows travel as JSON text.
   m.def("_nu_range_default_options", [] { return experiments::nu_range_options_json({}); });
   m.def(
