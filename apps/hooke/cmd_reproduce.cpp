@@ -9,6 +9,7 @@
 #include <hooke/core/error.hpp>
 #include <hooke/core/log.hpp>
 #include <hooke/core/output_transaction.hpp>
+#include <hooke/core/settings.hpp>
 #include <hooke/experiments/nu_range.hpp>
 #include <hooke/experiments/reproduce_arnab2008.hpp>
 #include <hooke/experiments/reproduce_lloyd2007.hpp>
@@ -62,11 +63,25 @@ experiments::NuRangeReport nu_range_on_dask(const std::string& mesh_dir, const e
                                       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
+// --laws: "none", or LAW:STRAIN entries (neohookean:0.2).
+std::vector<experiments::NuRangeLaw> law_regimes(const std::vector<std::string>& items) {
+  std::vector<experiments::NuRangeLaw> out;
+  if (items.size() == 1 && items.front() == "none") return out;
+  for (const std::string& item : items) {
+    const std::size_t colon = item.find(':');
+    if (colon == std::string::npos)
+      throw InvalidArgument("--laws: '" + item + "' is not LAW:STRAIN (neohookean:0.2) or none");
+    out.push_back({item.substr(0, colon), settings::parse_number("--laws strain", item.substr(colon + 1))});
+  }
+  return out;
+}
+
 }  // namespace
 
 Action add_reproduce_command(CLI::App& app) {
   struct Options {
     std::string paper, out_dir, mesh_dir = HOOKE_MESH_DIR, scheduler;
+    std::vector<std::string> laws;
     bool no_figures = false;
     experiments::NuRangeOptions nu_range;
   };
@@ -93,11 +108,20 @@ Action add_reproduce_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--large-strain", o->nu_range.large_strain, "nu-range: the large-deformation strain (0: none)")
       ->capture_default_str();
+  cmd->add_option("--laws", o->laws,
+                  "nu-range: the law regimes, LAW:STRAIN (displacement control, Hookean and fitted terms), or none")
+      ->delimiter(',')
+      ->default_str("neohookean:0.2,stvk:0.12");
+  cmd->add_option("--fit-refinements", o->nu_range.fit_refinements,
+                  "nu-range: the law fit's pattern-search steps (1/2, 1/4, ...)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   cmd->add_option("--scheduler", o->scheduler,
                   "nu-range: run the comparisons as Dask tasks (hooke.batch, docs/batch.md) on the scheduler at this "
                   "address (tcp://host:8786), or 'local' for a local cluster of one worker per core; same report");
   return [o] {
     if (o->out_dir.empty()) o->out_dir = "out/" + o->paper;
+    if (!o->laws.empty()) o->nu_range.laws = law_regimes(o->laws);
     if (o->paper != "lloyd2007" && o->paper != "arnab2008" && o->paper != "nu-range")
       throw InvalidArgument("unknown paper '" + o->paper + "' (available: lloyd2007, arnab2008, nu-range)");
     // One transaction: report and figures are written into a staging folder and moved into place with the

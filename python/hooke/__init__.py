@@ -144,7 +144,8 @@ def reproduce(paper, out_dir, meshes=None, **options):
     (figures/*.json; `hooke reproduce` renders them), and returns the JSON report as a dict (every number of the
     report). `meshes`: the folder of the committed meshes (default: the source tree's data/meshes). nu-range takes
     the study's options as keywords (`hooke reproduce nu-range --help`, dashes as underscores): poisson, methods,
-    triangle_methods, planes, study_meshes, loads, small_strain, large_strain."""
+    triangle_methods, planes, study_meshes, loads, small_strain, large_strain, laws (a list of {"law": L,
+    "strain": S}: the displacement-controlled law regimes, Hookean and fitted terms; [] for none), fit_refinements."""
     import json
     import pathlib
 

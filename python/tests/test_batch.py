@@ -195,7 +195,8 @@ def test_reproduce_nu_range_on_dask_writes_the_serial_report(tmp_path):
 
     # cylinder_hole is large enough for CHOLMOD's supernodal factorisation to call the BLAS, whose thread count would
     # change the last bits (the study runs it on one thread: core/blas_threads.hpp).
-    grid = ["--nu", "0.45", "--study-meshes", "cylinder_hole,rectangle_tri", "--large-strain", "0", "--no-figures"]
+    grid = ["--nu", "0.45", "--study-meshes", "cylinder_hole,rectangle_tri", "--large-strain", "0", "--laws", "none",
+            "--no-figures"]
     serial = subprocess.run([cli, "reproduce", "nu-range", "-o", str(tmp_path / "serial")] + grid,
                             capture_output=True, text=True)
     assert serial.returncode == 0, serial.stderr
@@ -225,12 +226,17 @@ def test_python_nu_range_on_dask_writes_the_report(meshes, tmp_path, client):
     from hooke import _hooke
 
     options = json.loads(_hooke._nu_range_default_options())
-    options.update(poisson=[0.3], meshes=["cylinder"], large_strain=0.0)
+    # with a law regime: its tasks (one per mesh and nu, fitting every method's law) travel as JSON too
+    options.update(poisson=[0.3], meshes=["cylinder"], large_strain=0.0, laws=[{"law": "neohookean", "strain": 0.2}],
+                   fit_refinements=0)
     options = json.dumps(options)
     picks = batch.nu_range(tmp_path, meshes, options, client=client, progress=False)
     report = json.loads((tmp_path / "nu_range.json").read_text())
     serial = [row for t in _hooke._nu_range_tasks(str(meshes), options)
               for row in json.loads(_hooke._nu_range_task(str(meshes), options, t))]
-    assert report["rows"] == serial and len(serial) == 3 * 5
-    assert len(picks) == 1 and picks[0].startswith("tet, nu = 0.3: ")
+    assert report["rows"] == serial and len(serial) == 3 * 5 + 3 * 5 * 2  # traction; Hookean and fitted per load
+    fitted = [r for r in serial if r["term_law"] == "fitted"]
+    assert len(fitted) == 15 and all(r["control"] == "displacement" and r["force_error"] >= 0 for r in fitted)
+    assert len(picks) == 2 and picks[0].startswith("tet, nu = 0.3: ")
+    assert picks[1].startswith("tet, nu = 0.3, neohookean FEM at 20 % strain, displacement control: ")
     assert (tmp_path / "method_table.inc").exists() and (tmp_path / "nu_range.md").exists()

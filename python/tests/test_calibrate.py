@@ -101,7 +101,7 @@ def test_reproduce_arnab2008_returns_the_report_as_a_dict(tmp_path):
 
 def test_reproduce_nu_range_takes_the_studys_options(tmp_path, meshes):
     report = hooke.reproduce("nu-range", tmp_path, meshes, poisson=[0.3], methods=["lloyd-tet", "any-nu-tet"],
-                             study_meshes=["cylinder_hole"], loads=["stretch"], large_strain=0.0)
+                             study_meshes=["cylinder_hole"], loads=["stretch"], large_strain=0.0, laws=[])
     assert (tmp_path / "nu_range.md").exists() and (tmp_path / "method_table.inc").exists()
     rows = report["rows"]
     assert {r["method"] for r in rows} == {"lloyd-tet", "any-nu-tet"}

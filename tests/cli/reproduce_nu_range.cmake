@@ -3,7 +3,7 @@
 file(REMOVE_RECURSE ${OUT})
 include(${CMAKE_CURRENT_LIST_DIR}/run_hooke.cmake)
 run_ok(nu_range reproduce nu-range --nu 0.25,0.45 --methods lloyd-tet,any-nu-tet --study-meshes cone --large-strain 0
-       --no-figures -o ${OUT})
+       --laws none --no-figures -o ${OUT})
 if(NOT out MATCHES "pick tet, nu = 0.45: any-nu-tet, worst relative L2 0\\.[0-9]+ over 3 cases")
   message(FATAL_ERROR "nu-range did not pick any-nu-tet at nu = 0.45")
 endif()
@@ -23,3 +23,21 @@ file(READ ${OUT}/method_table.inc table)
 if(NOT table MATCHES "\{\"tet\", 0.45, \"any-nu-tet\", 0\.[0-9]+, 3\},")
   message(FATAL_ERROR "method_table.inc has no tet entry at nu = 0.45:\n${table}")
 endif()
+# A law regime (displacement control, Hookean and fitted terms) on the triangles in plane strain: a table per load
+# with both numbers of both models, and a pick per regime.
+file(REMOVE_RECURSE ${OUT})
+run_ok(nu_range_law reproduce nu-range --nu 0.3 --triangle-methods any-nu-triangle --planes strain
+       --study-meshes rectangle_tri --large-strain 0 --laws neohookean:0.2 --fit-refinements 1
+       --no-figures -o ${OUT})
+if(NOT out MATCHES "pick triangle plane-strain, nu = 0.3, neohookean FEM at 20 % strain, displacement control: any-nu-triangle( fitted)?, worst of relative L2 and force error 0\\.[0-9]+ over 3 cases")
+  message(FATAL_ERROR "nu-range printed no pick for the law regime:\n${out}")
+endif()
+file(READ ${OUT}/nu_range.md md)
+foreach(load stretch compress shear)
+  if(NOT md MATCHES "## rectangle_tri [(]plane strain[)], ${load}, neohookean FEM at 20 % strain, displacement control\n\n[^\n]*\n\n[|] model [|] 0.3 [|]\n[|]---[|]---[|]\n[|] any-nu-triangle [|] 0\\.[0-9]+ / 0\\.[0-9]+ [|]\n[|] any-nu-triangle fitted [|] 0\\.[0-9]+ / 0\\.[0-9]+ [(]-?[0-9.]+, -?[0-9.]+[)] [|]")
+    message(FATAL_ERROR "nu_range.md has no full ${load} table of the law regime:\n${md}")
+  endif()
+endforeach()
+file(REMOVE_RECURSE ${OUT})
+run_fails(nu_range_bad_law "is not LAW:STRAIN" ${OUT}/nu_range.md reproduce nu-range --laws neohookean
+          --study-meshes rectangle_tri -o ${OUT})

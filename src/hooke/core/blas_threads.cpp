@@ -1,4 +1,5 @@
 #include <dlfcn.h>
+#include <omp.h>
 
 #include <hooke/core/blas_threads.hpp>
 
@@ -13,6 +14,12 @@ int set_blas_threads(int threads) {
   if (get == nullptr || set == nullptr || threads < 1) return 0;
   const int previous = get();
   set(threads);
+  return previous;
+}
+
+int set_openmp_threads(int threads) {
+  const int previous = omp_get_max_threads();
+  if (threads >= 1) omp_set_num_threads(threads);
   return previous;
 }
 

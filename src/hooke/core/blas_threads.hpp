@@ -1,10 +1,12 @@
 #pragma once
-/// The thread count of the BLAS under CHOLMOD's supernodal factorisation. Debian's OpenBLAS (libopenblas0-pthread)
-/// runs its own threads, and its dense kernels block differently with more threads, so a factorisation's last bits
-/// depend on the thread count (measured: relative errors of the nu-range study differ by 1e-14 to 1e-10 between one
-/// and two BLAS threads; hooke's own OpenMP loops do not). Work that must give the same bits on any machine (the
-/// nu-range study, serial or on Dask workers) runs the BLAS on one thread; on the study's meshes that is also faster
-/// (one task 5.8 s against 6.6 s with two threads).
+/// The thread counts under hooke's numerics: the BLAS's (CHOLMOD's supernodal factorisation) and OpenMP's (hooke's
+/// own loops and Eigen's dense products). Debian's OpenBLAS (libopenblas0-pthread) runs its own threads, and its dense
+/// kernels block differently with more threads; Eigen's products split their blocks by omp_get_max_threads(). So a
+/// result's last bits depend on both counts (measured: relative errors of the nu-range study differ by 1e-14 to 1e-10
+/// between one and two BLAS threads, and by 4e-13 between one and two OpenMP threads in stiffness-fit-volume's
+/// self-weight scale). Work that must give the same bits on any machine (the nu-range study, serial or on Dask
+/// workers, whose processes start with OMP_NUM_THREADS=1) runs on one thread of each; on the study's meshes that is
+/// also faster (one task 5.8 s against 6.6 s with two BLAS threads).
 
 namespace hooke {
 
@@ -12,18 +14,25 @@ namespace hooke {
 /// 0 (and nothing set) for a BLAS without a thread count. Process-wide: call it where no factorisation runs.
 int set_blas_threads(int threads);
 
-/// One BLAS thread (or `threads`) for the scope's lifetime; the previous count is restored at its end.
-class ScopedBlasThreads {
+/// Sets OpenMP's thread count for later parallel regions of the calling thread (omp_set_num_threads, >= 1) and
+/// returns the previous omp_get_max_threads().
+int set_openmp_threads(int threads);
+
+/// One BLAS thread and one OpenMP thread (or `threads` of each) for the scope's lifetime; the previous counts are
+/// restored at its end.
+class ScopedThreadCount {
  public:
-  explicit ScopedBlasThreads(int threads = 1) : m_previous(set_blas_threads(threads)) {}
-  ~ScopedBlasThreads() {
-    if (m_previous > 0) set_blas_threads(m_previous);
+  explicit ScopedThreadCount(int threads = 1)
+      : m_previous_blas(set_blas_threads(threads)), m_previous_openmp(set_openmp_threads(threads)) {}
+  ~ScopedThreadCount() {
+    if (m_previous_blas > 0) set_blas_threads(m_previous_blas);
+    set_openmp_threads(m_previous_openmp);
   }
-  ScopedBlasThreads(const ScopedBlasThreads&) = delete;
-  ScopedBlasThreads& operator=(const ScopedBlasThreads&) = delete;
+  ScopedThreadCount(const ScopedThreadCount&) = delete;
+  ScopedThreadCount& operator=(const ScopedThreadCount&) = delete;
 
  private:
-  int m_previous;
+  int m_previous_blas, m_previous_openmp;
 };
 
 }  // namespace hooke

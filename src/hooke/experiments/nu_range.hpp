@@ -1,6 +1,8 @@
 #pragma once
 /// The study beyond the papers: every calibration method against the FEM over Poisson's ratios from 0 to 0.49,
-/// stretch / compress / shear, in the linear regime and at 12 % strain (against linear and StVK FEM), on the cylinder
+/// stretch / compress / shear, in the linear regime and at 12 % strain (against linear and StVK FEM) under traction
+/// control, and in the law regimes (Neo-Hookean FEM at 20 %, StVK at 12 %) under displacement control with Hookean
+/// terms and with each model's term law fitted up to that strain (experiments::fit_term_law), on the cylinder
 /// with a hole and the cone (tet methods) and a triangulated rectangle in plane stress and plane strain (triangle
 /// methods), with a figure of error against nu, a recommendation per nu and the table `--method auto` picks from
 /// (calibrate::choose_method).
@@ -12,6 +14,14 @@
 #include <vector>
 
 namespace hooke::experiments {
+
+/// A law regime of the study: every method against the FEM of `law` under displacement control at `strain` (stretch,
+/// compression and shear: the top moved by strain x height), once with Hookean terms and once with its term law fitted
+/// up to `strain` (docs/methods/large_strain.md). Relative L2 and the force on the top are both recorded.
+struct NuRangeLaw {
+  std::string law;      ///< the FEM law: "neohookean", "stvk" or "linear" (material::law_from_name)
+  double strain = 0.2;  ///< the measured strain and the fitted range, in (0, 0.5]
+};
 
 struct NuRangeOptions {
   std::vector<double> poisson = {0.0, 0.1, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.49};  ///< nu values
@@ -25,18 +35,26 @@ struct NuRangeOptions {
   std::vector<std::string> loads = {"stretch", "compress", "shear"};
   double small_strain = 0.001;  ///< the linear regime, default 0.1 %
   double large_strain = 0.12;   ///< the papers' large deformation, default 12 % (0: skip both large regimes)
+  /// the law regimes (empty: none), each one task per mesh, plane and nu that fits every method's law once
+  std::vector<NuRangeLaw> laws = {{"neohookean", 0.2}, {"stvk", 0.12}};
+  int fit_refinements = 3;  ///< the law fit's pattern-search steps (TermLawFitOptions::refinements), >= 0
 };
 
 /// One comparison: a method at one nu on one mesh, load and regime.
 struct NuRangeRow {
   std::string table;  ///< calibrate::method_table_name of the mesh and material: "tet", "triangle plane-stress", ...
   std::string mesh, load;
-  std::string reference;  ///< "linear" or "stvk"
-  double strain = 0.0;    ///< mean linear-FEM strain of the load
+  std::string reference;  ///< the FEM law: "linear", "stvk" or "neohookean"
+  double strain = 0.0;  ///< traction control: mean linear-FEM strain of the load; displacement control: the top's move
   double poisson = 0.0;
   std::string method;
-  double relative_l2 = -1.0;  ///< |x_spring - x_fem| / |x_fem - X| over all nodes; -1 when a solve failed
-  std::string status;         ///< "converged" or the failing solve's status and message
+  double relative_l2 = -1.0;         ///< |x_spring - x_fem| / |x_fem - X| over all nodes; -1 when a solve failed
+  std::string status;                ///< "converged" or the failing solve's status and message
+  std::string control = "traction";  ///< "traction", or "displacement" in the law regimes
+  /// the law regimes: "hookean" (m = q = 1) or "fitted" (the exponents below fitted up to `strain`); else empty
+  std::string term_law;
+  double spring_exponent = 1.0, volume_exponent = 1.0;  ///< the model's Seth-Hill exponents (m, q)
+  double force_error = -1.0;  ///< displacement control: |R_model - R_FEM| / |R_FEM| of the top's force; else -1
 };
 
 struct NuRangeReport {
@@ -51,8 +69,8 @@ struct NuRangeReport {
   double seconds = 0.0;
 };
 
-/// The study runs the BLAS on one thread (ScopedBlasThreads), so that its numbers are the same bits on any machine and
-/// in any process: the serial run and hooke.batch's Dask workers write the same report.
+/// The study runs the BLAS and OpenMP on one thread (ScopedThreadCount), so that its numbers are the same bits on any
+/// machine and in any process: the serial run and hooke.batch's Dask workers write the same report.
 ///
 /// One independent piece of the study: every method of a mesh's table on one mesh, plane, load, regime and nu (one
 /// FEM reference shared by the methods). The study is the concatenation of its tasks' rows in nu_range_tasks' order,
@@ -60,18 +78,22 @@ struct NuRangeReport {
 struct NuRangeTask {
   std::string mesh;                                  ///< committed mesh name (data/meshes/<mesh>.msh)
   material::Plane plane = material::Plane::kStress;  ///< the 2D reduction (triangle meshes; tets: kStress)
-  std::string load;                                  ///< "stretch", "compress" or "shear"
-  std::string reference;                             ///< "linear" or "stvk"
-  double strain = 0.0;                               ///< mean linear-FEM strain of the load
-  double poisson = 0.0;                              ///< nu
+  /// "stretch", "compress" or "shear"; "all" in a law regime, whose fit measures every load of the options together
+  std::string load;
+  std::string reference;             ///< the FEM law: "linear", "stvk" (traction) or a law regime's law
+  double strain = 0.0;               ///< mean linear-FEM strain of the load, or the law regime's strain
+  double poisson = 0.0;              ///< nu
+  std::string control = "traction";  ///< "traction", or "displacement" for a law regime
 };
 
-/// The study's tasks in the order the serial study runs them (meshes, planes, loads, regimes, nu).
+/// The study's tasks in the order the serial study runs them (meshes, planes, loads, regimes, nu; then per mesh and
+/// plane the law regimes, nu).
 /// @throws IoError when a mesh is missing; InvalidArgument for an unknown method, load or plane, or a mesh that is
 ///         neither tets nor triangles
 std::vector<NuRangeTask> nu_range_tasks(const std::filesystem::path& mesh_dir, const NuRangeOptions& options = {});
 
-/// The rows of one task (one per method of the mesh's table, in options' order), each logged at LogLevel::kInfo.
+/// The rows of one task (one per method of the mesh's table, in options' order; in a law regime, per load and method a
+/// Hookean row and a fitted row), each logged at LogLevel::kInfo.
 /// A solve that fails is recorded in its row (relative_l2 -1 and the message), not thrown.
 /// @throws IoError when the mesh is missing
 std::vector<NuRangeRow> run_nu_range_task(const std::filesystem::path& mesh_dir, const NuRangeOptions& options,
