@@ -1,3 +1,4 @@
+#include <algorithm>
 // hooke identify MESH --young PA --poisson NU [--params P] [--objective forces|positions] [--reference fem|FILE...]
 // -o MODEL: a spring model identified from reference deformations (Lloyd et al. 2007, Eq. 1-2), its error on
 // training and held-out cases beside an analytic model's, and the model file.
@@ -23,6 +24,7 @@ struct IdentifyCli {
   std::string law = "linear", compare = "auto", output, report, write_reference;
   std::vector<std::string> reference{"fem"}, held_out_reference;
   experiments::ReferenceLoads loads;
+  std::string control = "traction";  ///< fem: --control, parsed into loads.control
   experiments::NamedIdentifyOptions named;
   double density = 1000.0;
 };
@@ -31,7 +33,9 @@ std::vector<identify::ReferenceCase> reference_cases(const IdentifyCli& o, const
                                                      const material::Material& material) {
   if (o.reference.size() == 1 && o.reference.front() == "fem") {
     if (!o.held_out_reference.empty()) throw InvalidArgument("--held-out-reference needs --reference FILE...");
-    return experiments::fem_reference_cases(mesh, material, o.loads);
+    experiments::ReferenceLoads loads = o.loads;
+    loads.control = model::load_control_from_name(o.control);
+    return experiments::fem_reference_cases(mesh, material, loads);
   }
   std::vector<identify::ReferenceCase> cases;
   for (const auto& f : o.reference) cases.push_back(identify::read_reference(f, mesh));
@@ -67,11 +71,17 @@ void print_study(const experiments::IdentificationStudy& s, const identify::Iden
         r.started_from_model ? s.analytic_method.c_str() : "Eq. 2 fit", r.position_history.back(),
         r.position_iterations, r.static_solves);
   if (r.clamped_rest_lengths) std::printf("  warning   %d rest lengths kept in [L/2, 2L]\n", r.clamped_rest_lengths);
-  std::printf("  %-34s %-9s %12s %12s\n", "case (relative L2 of positions)", "", "identified",
-              s.analytic_method.c_str());
-  for (std::size_t c = 0; c < s.case_names.size(); ++c)
-    std::printf("  %-34s %-9s %12.4g %12.4g\n", s.case_names[c].c_str(), s.held_out[c] ? "held out" : "training",
+  const bool forces = std::any_of(s.identified_force_errors.begin(), s.identified_force_errors.end(),
+                                  [](double e) { return e != -1.0; });
+  std::printf("  %-34s %-9s %12s %12s%s\n", "case (relative L2 of positions)", "", "identified",
+              s.analytic_method.c_str(), forces ? "   force error: identified, analytic" : "");
+  for (std::size_t c = 0; c < s.case_names.size(); ++c) {
+    std::printf("  %-34s %-9s %12.4g %12.4g", s.case_names[c].c_str(), s.held_out[c] ? "held out" : "training",
                 s.identified_errors[c], s.analytic_errors[c]);
+    if (s.identified_force_errors[c] != -1.0)
+      std::printf("   %12.4g %12.4g", s.identified_force_errors[c], s.analytic_force_errors[c]);
+    std::printf("\n");
+  }
   std::printf("  RMS training %.4g (analytic %.4g), held out %.4g (analytic %.4g); evaluation %.3f s\n",
               s.training_error, s.analytic_training_error, s.held_out_error, s.analytic_held_out_error,
               s.evaluation_seconds);
@@ -96,6 +106,10 @@ int run_identify(const IdentifyCli& o) {
       mesh.node_count(), mesh.element_count(), std::string(mesh::element_kind_name(mesh.kind)).c_str(),
       material.youngs_modulus, material.poisson_ratio,
       o.reference.front() == "fem" ? (std::string(material::law_name(material.law)) + " FEM").c_str() : "files");
+  if (o.control != "traction" && o.reference.front() != "fem")
+    throw InvalidArgument(
+        "--control applies to FEM references; a file's cases say themselves which nodes are "
+        "prescribed (its 'prescribed' array)");
   const auto cases = reference_cases(o, mesh, material);
   // FEM references of a nonlinear law: the start is the analytic model with its term law fitted up to that strain.
   const double strain_range = o.reference.front() == "fem" ? o.loads.strain : 0.0;
@@ -145,6 +159,11 @@ Action add_identify_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--held-out-reference", o->held_out_reference, "Reference files kept out of the fit (with files)");
   cmd->add_option("--strain", o->loads.strain, "fem: largest displacement of each case / the body's extent")
+      ->capture_default_str();
+  cmd->add_option("--control", o->control,
+                  "fem: traction (a load on the loaded facets) or displacement (their nodes moved by --strain x the "
+                  "extent, the force holding them measured and fitted)")
+      ->check(CLI::IsMember({"traction", "displacement"}))
       ->capture_default_str();
   cmd->add_option("--held-out", o->loads.held_out, "fem: random load cases kept out of the fit")->capture_default_str();
   cmd->add_option("--seed", o->loads.seed, "fem: seed of the random cases")->capture_default_str();

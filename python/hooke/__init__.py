@@ -169,7 +169,7 @@ def reproduce(paper, out_dir, meshes=None, **options):
 
 def identify(mesh, material, params="auto", objective="positions", references=None, strain=0.01, held_out=4, seed=2007,
              regularize=0.0, stiffness_floor=1e-3, iterations=30, compare="auto", density=1000.0, tolerance=1e-9,
-             negative_volume=False):
+             negative_volume=False, control="traction"):
     """Identifies a spring model from reference deformations (Lloyd et al. 2007: Eq. 2 `objective="forces"`, Eq. 1
     `objective="positions"`), as `hooke identify` does (docs/methods/identification.md).
 
@@ -184,6 +184,9 @@ def identify(mesh, material, params="auto", objective="positions", references=No
     tolerance   Eq. 2 stops when its projected gradient is this fraction of U^T f, in (0, 1); 1e-2 suffices
                 for large meshes (the force residual is then within 0.3 % of its minimum)
     negative_volume  let volume terms be negative: needed for nu < 1/4 (a spring network alone has nu = 1/4)
+    control     FEM references: "traction" (a load on the loaded facets) or "displacement" (their nodes moved by strain
+                x the extent; the force holding them is measured and fitted, and each case reports its force error).
+                A reference dict marks such nodes with "prescribed": (N,) 1.0 where held, its "force" the reaction
 
     Returns (model, report): a hooke.Model (method "identified", ready for hooke.Problem and write_model) and the
     report as a dict (per case the identified and analytic relative L2 errors, RMS training and held-out errors,
@@ -197,7 +200,7 @@ def identify(mesh, material, params="auto", objective="positions", references=No
     model, report = _hooke._identify(mesh, material, params, objective, references, float(strain), int(held_out),
                                      int(seed), float(regularize), float(stiffness_floor), int(iterations), compare,
                                      float(density), float(tolerance),
-                                     bool(negative_volume))
+                                     bool(negative_volume), str(control))
     return model, json.loads(report)
 
 

@@ -12,7 +12,9 @@
 #include <hooke/mesh/measure.hpp>
 #include <hooke/model/free_map.hpp>
 #include <hooke/model/mass.hpp>
+#include <hooke/model/problem.hpp>
 #include <hooke/model/support.hpp>
+#include <hooke/solve/static_equilibrium.hpp>
 #include <nlohmann/json.hpp>
 #include <random>
 
@@ -28,7 +30,8 @@ struct AxisEnds {
   int axis = 0;
   double extent = 0.0;
   std::vector<char> fixed_dofs;
-  std::vector<int> loaded;  // facets
+  std::vector<int> loaded;        // facets
+  std::vector<int> loaded_nodes;  // their nodes, sorted
 };
 
 AxisEnds axis_ends(const mesh::Mesh& mesh, const model::BoundaryFacets& b, int axis) {
@@ -42,6 +45,10 @@ AxisEnds axis_ends(const mesh::Mesh& mesh, const model::BoundaryFacets& b, int a
     for (int a = 0; a < b.facets.cols(); ++a)
       for (int k = 0; k < d; ++k) e.fixed_dofs[static_cast<std::size_t>(d * b.facets(f, a) + k)] = 1;
   e.loaded = model::facing_end_facets(mesh, b, axis, model::End::kHigh, kEndQuarter);
+  for (int f : e.loaded)
+    for (int a = 0; a < b.facets.cols(); ++a) e.loaded_nodes.push_back(b.facets(f, a));
+  std::sort(e.loaded_nodes.begin(), e.loaded_nodes.end());
+  e.loaded_nodes.erase(std::unique(e.loaded_nodes.begin(), e.loaded_nodes.end()), e.loaded_nodes.end());
   if (supports.empty() || e.loaded.empty())
     throw InvalidArgument(std::string("reference loads: ") + mesh.source + " has no boundary facets facing the " +
                           (supports.empty() ? "low" : "high") + " end of the " + kAxes[axis] + " axis");
@@ -64,13 +71,29 @@ VecX traction_forces(const mesh::Mesh& mesh, const model::BoundaryFacets& b, con
   return f;
 }
 
-// A case before solving: its supports and its forces at a unit traction scale.
+// A case before solving: its supports, its forces at a unit traction scale and, for displacement control, its
+// loaded nodes' move at unit scale (the traction's direction field at each node).
 struct PendingCase {
   std::string name;
   const AxisEnds* ends;
   VecX unit_force;
   bool held_out;
+  VecX unit_move;  // flat, nonzero on the loaded facets' nodes
 };
+
+// The loaded facets' nodes moved by field(node position), flat.
+template <class Field>
+VecX facet_node_moves(const mesh::Mesh& mesh, const model::BoundaryFacets& b, const std::vector<int>& facets,
+                      Field field) {
+  const int d = mesh.dim();
+  VecX u = VecX::Zero(d * mesh.node_count());
+  for (int facet : facets)
+    for (int a = 0; a < b.facets.cols(); ++a) {
+      const int n = b.facets(facet, a);
+      u.segment(d * n, d) = field(VecX(mesh.nodes.row(n).transpose()));
+    }
+  return u;
+}
 
 std::vector<PendingCase> pending_cases(const mesh::Mesh& mesh, const model::BoundaryFacets& b,
                                        const std::vector<AxisEnds>& ends, const ReferenceLoads& loads,
@@ -82,15 +105,19 @@ std::vector<PendingCase> pending_cases(const mesh::Mesh& mesh, const model::Boun
     for (int sign : {+1, -1}) {
       VecX dir = VecX::Zero(d);
       dir(e.axis) = sign;
+      const auto field = [&](const VecX&) { return dir; };
       out.push_back({(sign > 0 ? "stretch" : "compress") + end, &e,
-                     traction_forces(mesh, b, e.loaded, thickness, [&](const VecX&) { return dir; }), false});
+                     traction_forces(mesh, b, e.loaded, thickness, field), false,
+                     facet_node_moves(mesh, b, e.loaded, field)});
     }
     for (int other = 0; other < d; ++other) {
       if (other == e.axis) continue;
       VecX dir = VecX::Zero(d);
       dir(other) = 1.0;
+      const auto field = [&](const VecX&) { return dir; };
       out.push_back({std::string("shear +") + kAxes[other] + end, &e,
-                     traction_forces(mesh, b, e.loaded, thickness, [&](const VecX&) { return dir; }), false});
+                     traction_forces(mesh, b, e.loaded, thickness, field), false,
+                     facet_node_moves(mesh, b, e.loaded, field)});
     }
   }
   std::mt19937 rng(loads.seed);
@@ -106,13 +133,44 @@ std::vector<PendingCase> pending_cases(const mesh::Mesh& mesh, const model::Boun
     }
     dir.normalize();
     const double size = std::max(e.extent, 1e-300);
-    out.push_back(
-        {"random " + std::to_string(r + 1) + " on the +" + kAxes[e.axis] + " end", &e,
-         traction_forces(mesh, b, e.loaded, thickness,
-                         [&](const VecX& c) { return VecX(dir * (1.0 + 0.5 * slope.dot(c - centre) / size)); }),
-         true});
+    const auto field = [&](const VecX& c) { return VecX(dir * (1.0 + 0.5 * slope.dot(c - centre) / size)); };
+    out.push_back({"random " + std::to_string(r + 1) + " on the +" + kAxes[e.axis] + " end", &e,
+                   traction_forces(mesh, b, e.loaded, thickness, field), true,
+                   facet_node_moves(mesh, b, e.loaded, field)});
   }
   return out;
+}
+
+// A case under displacement control: the supports clamped, the loaded nodes held at rest + strain x extent x the
+// unit move (ramped from rest with the load factor), the FEM's equilibrium and the force holding each loaded node.
+identify::ReferenceCase displaced_case(const std::shared_ptr<model::Model>& fem, const PendingCase& p, const VecX& rest,
+                                       double strain, material::Law law) {
+  const int d = fem->dim();
+  identify::ReferenceCase c{p.name,
+                            rest,
+                            VecX::Zero(rest.size()),
+                            p.ends->fixed_dofs,
+                            p.held_out,
+                            std::vector<char>(static_cast<std::size_t>(rest.size()), 0)};
+  for (int node : p.ends->loaded_nodes)
+    for (int k = 0; k < d; ++k) {
+      const auto dof = static_cast<std::size_t>(d * node + k);
+      if (!c.fixed_dofs[dof]) c.prescribed_dofs[dof] = 1;
+    }
+  model::Problem problem = model::make_problem(fem);
+  problem.fixed_dofs = identify::held_dofs(c);
+  problem.prescribed_positions = rest + strain * p.ends->extent * p.unit_move;
+  solve::StaticOptions statics;
+  statics.ramp_prescribed = true;
+  const solve::StaticResult r = solve::static_equilibrium(problem, statics);
+  if (r.report.status != solve::SolveStatus::kConverged)
+    throw SolverFailure("reference case '" + c.name + "' (" + std::string(material::law_name(law)) +
+                        " FEM, displacement control): " + r.report.message);
+  c.positions = r.positions;
+  const VecX g = fem->gradient(r.positions);
+  for (std::size_t k = 0; k < c.prescribed_dofs.size(); ++k)
+    if (c.prescribed_dofs[k]) c.external_force(static_cast<Eigen::Index>(k)) = g(static_cast<Eigen::Index>(k));
+  return c;
 }
 
 double rms(const std::vector<double>& errors, const std::vector<char>& held_out, bool which) {
@@ -147,6 +205,11 @@ std::vector<identify::ReferenceCase> fem_reference_cases(const mesh::Mesh& mesh,
   if (material.law != material::Law::kLinear) nonlinear_model = fem::elastic_model(mesh, {material});
 
   std::vector<identify::ReferenceCase> out;
+  if (loads.control == model::LoadControl::kDisplacement) {
+    const std::shared_ptr<model::Model> fem = nonlinear_model ? nonlinear_model : linear_model;
+    for (const PendingCase& p : pending) out.push_back(displaced_case(fem, p, rest, loads.strain, material.law));
+    return out;
+  }
   for (const AxisEnds& e : ends) {
     std::vector<int> free;
     for (int dof = 0; dof < static_cast<int>(rest.size()); ++dof)
@@ -164,7 +227,7 @@ std::vector<identify::ReferenceCase> fem_reference_cases(const mesh::Mesh& mesh,
       for (int i = 0; i < map.size(); ++i) u(free[static_cast<std::size_t>(i)]) = u_free(i);
       for (int n = 0; n < mesh.node_count(); ++n) largest = std::max(largest, u.segment(d * n, d).norm());
       const double scale = loads.strain * e.extent / largest;
-      identify::ReferenceCase c{p.name, rest + scale * u, scale * p.unit_force, e.fixed_dofs, p.held_out};
+      identify::ReferenceCase c{p.name, rest + scale * u, scale * p.unit_force, e.fixed_dofs, p.held_out, {}};
       if (nonlinear_model) {
         const solve::StaticResult r = identify::reference_equilibrium(nonlinear_model, c, {}, c.positions);
         if (r.report.status != solve::SolveStatus::kConverged)
@@ -201,8 +264,9 @@ IdentificationStudy identification_study(const mesh::Mesh& mesh, const material:
   s.identification = identify::identify(mesh, cases, with_start);
   s.analytic_method = analytic_method;
   const auto t0 = std::chrono::steady_clock::now();
-  s.identified_errors = identify::position_errors(mesh, s.identification.springs, cases, options.statics);
-  s.analytic_errors = identify::position_errors(mesh, analytic, cases, options.statics);
+  s.identified_errors =
+      identify::position_errors(mesh, s.identification.springs, cases, options.statics, &s.identified_force_errors);
+  s.analytic_errors = identify::position_errors(mesh, analytic, cases, options.statics, &s.analytic_force_errors);
   std::vector<identify::ReferenceCase> training;
   for (const identify::ReferenceCase* c : identify::training_cases(cases)) training.push_back(*c);
   identify::ParameterLayout layout = identify::parameter_layout(
@@ -274,7 +338,9 @@ std::string identification_report_json(const IdentificationStudy& study, const i
     cases.push_back({{"name", study.case_names[c]},
                      {"held_out", static_cast<bool>(study.held_out[c])},
                      {"identified_relative_l2", study.identified_errors[c]},
-                     {"analytic_relative_l2", study.analytic_errors[c]}});
+                     {"analytic_relative_l2", study.analytic_errors[c]},
+                     {"identified_force_error", study.identified_force_errors[c]},
+                     {"analytic_force_error", study.analytic_force_errors[c]}});
   const nlohmann::json j = {{"objective", identify::objective_name(options.objective)},
                             {"parameters", identify::parameters_name(options.parameters)},
                             {"regularization", options.regularization},

@@ -7,6 +7,7 @@
 #include <hooke/identify/identify.hpp>
 #include <hooke/material/material.hpp>
 #include <hooke/mesh/mesh.hpp>
+#include <hooke/model/load_case.hpp>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,10 @@ struct ReferenceLoads {
   double strain = 0.01;
   int held_out = 4;      ///< random cases (random direction, linearly varying traction) kept out of the fit, default 4
   unsigned seed = 2007;  ///< of the random cases
+  /// kTraction (default): the loaded facets carry a traction. kDisplacement: their nodes are held by an instrument,
+  /// moved by strain x extent x the case's direction field (ramped in the nonlinear solve), and the force it applies
+  /// on each (the FEM's reaction dE/dx) is the case's measured force (identify::ReferenceCase::prescribed_dofs)
+  model::LoadControl control = model::LoadControl::kTraction;
 };
 
 /// Reference cases from the FEM of `material` (its law: linear, or StVK / Neo-Hookean solved by Newton). Training:
@@ -25,7 +30,8 @@ struct ReferenceLoads {
 /// the lowest quarter of the extent) are clamped and a uniform traction acts on those at the high end, along +a
 /// (stretch), -a (compress) and each other axis (shear): 12 cases on a tet mesh, 6 on a triangle mesh. Held out:
 /// `held_out` cases on the same supports with a random direction and a traction varying linearly over the patch.
-/// The linear FEM factorises once per support set.
+/// The linear FEM factorises once per support set. Under displacement control the same cases prescribe the loaded
+/// nodes' displacement instead (the direction field of the traction), largest move strain x extent.
 /// @param mesh      validated tet or triangle mesh, m
 /// @param material  E (Pa), nu, thickness for 2D, law
 /// @throws InvalidArgument when an end of an axis has no facets; SolverFailure when a nonlinear case fails
@@ -60,12 +66,15 @@ struct IdentificationStudy {
   std::vector<char> held_out;             ///< per case
   std::vector<double> identified_errors;  ///< per case: relative L2 |x - p_ref| / |p_ref - X| of the identified model
   std::vector<double> analytic_errors;    ///< the same for the analytic model
-  double training_error = 0.0;            ///< RMS over training cases of identified_errors
-  double held_out_error = 0.0;            ///< RMS over held-out cases (0 when there are none)
-  double analytic_training_error = 0.0;   ///< RMS of analytic_errors over the training cases
-  double analytic_held_out_error = 0.0;   ///< RMS of analytic_errors over the held-out cases
-  double analytic_force_residual = 0.0;   ///< Eq. 2's relative residual of the analytic model on the training cases
-  double evaluation_seconds = 0.0;        ///< time of the equilibria of both models on every case
+  /// per case under displacement control: the error of the total force on the prescribed nodes,
+  /// identify::reaction_error (-1 for a case under forces)
+  std::vector<double> identified_force_errors, analytic_force_errors;
+  double training_error = 0.0;           ///< RMS over training cases of identified_errors
+  double held_out_error = 0.0;           ///< RMS over held-out cases (0 when there are none)
+  double analytic_training_error = 0.0;  ///< RMS of analytic_errors over the training cases
+  double analytic_held_out_error = 0.0;  ///< RMS of analytic_errors over the held-out cases
+  double analytic_force_residual = 0.0;  ///< Eq. 2's relative residual of the analytic model on the training cases
+  double evaluation_seconds = 0.0;       ///< time of the equilibria of both models on every case
 };
 
 /// Identifies a model from `cases` and measures it and the analytic `analytic_method` model (calibrated from

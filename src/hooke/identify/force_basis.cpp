@@ -1,8 +1,15 @@
+#include <cmath>
 #include <hooke/identify/force_basis.hpp>
 #include <hooke/springs/detail/seth_hill.hpp>
 #include <hooke/springs/tet_volume_block.hpp>
 
 namespace hooke::identify {
+namespace {
+// A relative stretch (l/l0 - 1, V/V0 - 1) below this is round-off of the positions, not a deformation: its column is
+// zero. A spring or tet whose nodes are all held and moved rigidly (an instrument's plate, displacement control) is
+// unstretched up to round-off, and a column of round-off would let the least squares give it any stiffness.
+constexpr double kRoundOffStretch = 1e-9;
+}  // namespace
 
 ForceBasis::ForceBasis(const ParameterLayout& layout, const Eigen::Ref<const VecX>& positions)
     : m_layout(layout), m_dim(layout.dim) {
@@ -15,6 +22,11 @@ ForceBasis::ForceBasis(const ParameterLayout& layout, const Eigen::Ref<const Vec
     const double l = edge.norm();
     const VecX u = l > 0.0 ? VecX(edge / l) : VecX::Zero(d);
     const double l0 = layout.rest_length(s);
+    if (std::abs(l / l0 - 1.0) < kRoundOffStretch) {
+      m_stretch.row(s).setZero();
+      if (layout.offset_count()) m_direction.row(s) = u.transpose();
+      continue;
+    }
     m_stretch.row(s) =
         (layout.spring_exponent == 1.0 ? l - l0
                                        : l0 * springs::detail::seth_hill_energy(l / l0, layout.spring_exponent).first) *
@@ -27,6 +39,10 @@ ForceBasis::ForceBasis(const ParameterLayout& layout, const Eigen::Ref<const Vec
     for (int a = 0; a < 4; ++a) p.col(a) = positions.segment<3>(3 * layout.tets(t, a));
     const double v0 = layout.rest_volume(t);
     const double v = (p.col(1) - p.col(0)).dot((p.col(2) - p.col(0)).cross(p.col(3) - p.col(0))) / 6.0;
+    if (std::abs(v / v0 - 1.0) < kRoundOffStretch) {
+      m_volume.row(t).setZero();
+      continue;
+    }
     const double slope = layout.volume_exponent == 1.0
                              ? (v - v0) / (v0 * v0)
                              : springs::detail::seth_hill_energy(v / v0, layout.volume_exponent).first / v0;

@@ -300,8 +300,9 @@ Identification identify(const mesh::Mesh& mesh, const std::vector<ReferenceCase>
   if (options.parameters == Parameters::kScale) return identify_scale(mesh, cases, options, t0);
   const VecX rest_positions = mesh::flat_positions(mesh);
   for (const auto& c : cases) validate_reference(c, rest_positions.size());
-  const ReferenceCase rest{"rest", rest_positions, VecX::Zero(rest_positions.size()),
-                           std::vector<char>(rest_positions.size(), 0), false};
+  const ReferenceCase rest{
+      "rest", rest_positions, VecX::Zero(rest_positions.size()), std::vector<char>(rest_positions.size(), 0), false,
+      {}};
   const bool rest_lengths = options.parameters == Parameters::kSpringsVolumeRestLength;
   const auto training = fitted_cases(cases, rest, rest_lengths);
 

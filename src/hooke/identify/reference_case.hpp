@@ -13,12 +13,23 @@ struct ReferenceCase {
   VecX external_force;           ///< applied nodal forces f_ref, flat, N (entries of fixed DOFs ignored)
   std::vector<char> fixed_dofs;  ///< per DOF: 1 where the position is prescribed (a support); its force is unknown
   bool held_out = false;         ///< true: not fitted, only used to measure the identified model
+  /// Displacement control (docs/methods/identification.md): per DOF (or empty: none) 1 where an instrument holds the
+  /// node at `positions` and the force it applies there is measured (`external_force`, N: the reaction dE/dx). Held in
+  /// the equilibria like a support, but its force is data: a row of Eq. 2 and a term of Eq. 1.
+  std::vector<char> prescribed_dofs;
 };
+
+/// Per DOF, 1 where a case holds the position (its supports and its prescribed DOFs).
+std::vector<char> held_dofs(const ReferenceCase& reference);
+
+/// Whether the case prescribes any DOF (displacement control).
+bool has_prescribed(const ReferenceCase& reference);
 
 /// The cases that are fitted (not held out), in their order: pointers into `cases`.
 std::vector<const ReferenceCase*> training_cases(const std::vector<ReferenceCase>& cases);
 
-/// Checks sizes (positions, forces and fixed flags of dof_count entries each) and finiteness.
+/// Checks sizes (positions, forces and fixed flags of dof_count entries each; prescribed flags none or dof_count),
+/// finiteness, and that no DOF is both a support and prescribed.
 /// @throws InvalidArgument naming the case and what is wrong
 void validate_reference(const ReferenceCase& reference, Eigen::Index dof_count);
 

@@ -14,14 +14,19 @@ void write_reference(const std::filesystem::path& path, const mesh::Mesh& mesh, 
   io::Field displacement{"displacement", d, reference.positions - rest};
   io::Field force{"force", d, reference.external_force};
   io::Field fixed{"fixed", 1, VecX::Zero(mesh.node_count())};
+  io::Field prescribed{"prescribed", 1, VecX::Zero(mesh.node_count())};
   for (int n = 0; n < mesh.node_count(); ++n) {
     fixed.values(n) = reference.fixed_dofs[static_cast<std::size_t>(d * n)] ? 1.0 : 0.0;
     if (fixed.values(n) != 0.0) force.values.segment(d * n, d).setZero();
+    if (!reference.prescribed_dofs.empty() && reference.prescribed_dofs[static_cast<std::size_t>(d * n)])
+      prescribed.values(n) = 1.0;
   }
+  std::vector<io::Field> fields{displacement, force, fixed};
+  if (has_prescribed(reference)) fields.push_back(prescribed);  // files of traction cases stay as they were
   if (path.extension() == ".csv")
-    io::write_node_csv(path, mesh, {displacement, force, fixed});
+    io::write_node_csv(path, mesh, fields);
   else
-    io::write_vtu(path, mesh, {displacement, force, fixed});
+    io::write_vtu(path, mesh, fields);
 }
 
 namespace {
@@ -30,14 +35,14 @@ namespace {
 // against the mesh's.
 struct ReferenceArrays {
   RowMatX nodes, displacement, force;
-  VecX fixed;
+  VecX fixed, prescribed;
 };
 
 ReferenceArrays reference_from_vtu(const std::filesystem::path& path, int d) {
   const io::VtuContents vtu = io::read_vtu(path);
   const int n = vtu.mesh.node_count();
   ReferenceArrays a{vtu.mesh.nodes.leftCols(std::min<Eigen::Index>(d, vtu.mesh.nodes.cols())), RowMatX(n, d),
-                    RowMatX(n, d), VecX::Zero(n)};
+                    RowMatX(n, d), VecX::Zero(n), VecX::Zero(n)};
   const auto field = [&](const std::string& name, int components, RowMatX* rows, VecX* column) {
     for (const auto& f : vtu.point_data)
       if (f.name == name) {
@@ -53,6 +58,7 @@ ReferenceArrays reference_from_vtu(const std::filesystem::path& path, int d) {
   field("displacement", d, &a.displacement, nullptr);
   field("force", d, &a.force, nullptr);
   field("fixed", 1, nullptr, &a.fixed);
+  field("prescribed", 1, nullptr, &a.prescribed);
   return a;
 }
 
@@ -67,7 +73,7 @@ ReferenceArrays reference_from_csv(const std::filesystem::path& path, int d) {
     return t.values.col(c);
   };
   const Eigen::Index n = t.values.rows();
-  ReferenceArrays a{RowMatX(n, d), RowMatX(n, d), RowMatX(n, d), VecX::Zero(n)};
+  ReferenceArrays a{RowMatX(n, d), RowMatX(n, d), RowMatX(n, d), VecX::Zero(n), VecX::Zero(n)};
   const auto node = column("node");
   for (Eigen::Index i = 0; i < n; ++i)
     if (node(i) != static_cast<double>(i))
@@ -79,6 +85,7 @@ ReferenceArrays reference_from_csv(const std::filesystem::path& path, int d) {
     a.force.col(k) = column(std::string("force_") + kAxis[k]);
   }
   if (t.column("fixed") >= 0) a.fixed = column("fixed");
+  if (t.column("prescribed") >= 0) a.prescribed = column("prescribed");
   return a;
 }
 
@@ -96,13 +103,21 @@ ReferenceCase read_reference(const std::filesystem::path& path, const mesh::Mesh
     if ((a.nodes.row(i) - mesh.nodes.row(i)).norm() > tolerance)
       throw InvalidArgument(where + ": point " + std::to_string(i) + " is not at node " + std::to_string(i) + " of " +
                             mesh.source);
-  ReferenceCase c{path.filename().string(), VecX(d * n), VecX(d * n),
-                  std::vector<char>(static_cast<std::size_t>(d * n), 0), false};
+  ReferenceCase c{path.filename().string(),
+                  VecX(d * n),
+                  VecX(d * n),
+                  std::vector<char>(static_cast<std::size_t>(d * n), 0),
+                  false,
+                  {}};
+  if (a.prescribed.size() && (a.prescribed.array() != 0.0).any())
+    c.prescribed_dofs.assign(static_cast<std::size_t>(d * n), 0);
   for (int i = 0; i < n; ++i)
     for (int k = 0; k < d; ++k) {
       c.positions(d * i + k) = mesh.nodes(i, k) + a.displacement(i, k);
       c.external_force(d * i + k) = a.force(i, k);
       if (a.fixed(i) != 0.0) c.fixed_dofs[static_cast<std::size_t>(d * i + k)] = 1;
+      if (!c.prescribed_dofs.empty() && a.prescribed(i) != 0.0)
+        c.prescribed_dofs[static_cast<std::size_t>(d * i + k)] = 1;
     }
   validate_reference(c, d * n);
   return c;

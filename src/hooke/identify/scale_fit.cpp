@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/identify/positions_objective.hpp>
@@ -23,6 +24,43 @@ ScaleFit fit_scale(const mesh::Mesh& mesh, const calibrate::SpringModel& start, 
   if (training.empty() || !(g_ref > 0.0))
     throw InvalidArgument("the scale fit needs at least one training case that moves the body");
   ScaleFit out;
+  const auto prescribed =
+      std::count_if(training.begin(), training.end(), [](const ReferenceCase* c) { return has_prescribed(*c); });
+  if (prescribed != 0 && prescribed != static_cast<std::ptrdiff_t>(training.size()))
+    throw InvalidArgument(
+        "the scale fit takes training cases of one control: all under forces or all with prescribed "
+        "positions");
+  if (prescribed) {
+    // Displacement control: k -> c k leaves every equilibrium where it is and multiplies the held DOFs' forces by c,
+    // R(c) = c R(1), so the least-squares c is (R(1) . R_ref) / |R(1)|^2 in one step.
+    const auto model = calibrate::make_model(mesh, start);
+    double rr = 0.0, r_ref = 0.0, ref_ref = 0.0;
+    for (const ReferenceCase* c : training) {
+      const solve::StaticResult r = reference_equilibrium(model, *c, statics);
+      ++out.static_solves;
+      if (r.report.status != solve::SolveStatus::kConverged)
+        throw SolverFailure("scale fit, case '" + c->name + "': no equilibrium (" + r.report.message + ")");
+      const VecX g = model->gradient(r.positions);
+      for (std::size_t k = 0; k < c->prescribed_dofs.size(); ++k)
+        if (c->prescribed_dofs[k]) {
+          const auto i = static_cast<Eigen::Index>(k);
+          rr += g(i) * g(i);
+          r_ref += g(i) * c->external_force(i);
+          ref_ref += c->external_force(i) * c->external_force(i);
+        }
+    }
+    if (!(r_ref > 0.0) || !(ref_ref > 0.0))
+      throw SolverFailure(
+          "scale fit: the model's forces on the prescribed nodes point against the measured ones: no "
+          "c > 0 fits");
+    out.factor = r_ref / rr;
+    out.springs = scaled(start, out.factor);
+    out.history = {(rr - 2.0 * r_ref + ref_ref) / ref_ref,
+                   (out.factor * out.factor * rr - 2.0 * out.factor * r_ref + ref_ref) / ref_ref};
+    out.iterations = 1;
+    out.converged = true;
+    return out;
+  }
   std::vector<VecX> warm(training.size());  // each case's last equilibrium: the next solve's start
   for (int it = 0; it <= max_iterations; ++it) {
     out.springs = scaled(start, out.factor);

@@ -23,7 +23,10 @@ struct ScaleFit {
   bool converged = false;          ///< c changed by less than 1e-9 (relative) in the last update
 };
 
-/// Fits c on the cases not held out (at least one, with a non-zero reference displacement).
+/// Fits c on the cases not held out (at least one, with a non-zero reference displacement). Under displacement control
+/// (training cases with prescribed DOFs: all of them or none) the equilibria do not depend on c and the forces on the
+/// prescribed DOFs are c times those at c = 1: c is their least-squares fit to the measured forces, in one step, and
+/// `history` holds sum |R(c) - R_ref|^2 / sum |R_ref|^2 at c = 1 and at the fit.
 /// @param mesh     the rest mesh the model stands on, m
 /// @param start    the model to scale (springs and volume terms on mesh's nodes)
 /// @param cases    reference cases (validate_reference)
