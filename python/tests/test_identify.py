@@ -75,3 +75,26 @@ def test_identify_refuses_options_out_of_range():
                          ({"iterations": -2}, "iterations")]:
         with pytest.raises(hooke.InvalidArgument, match=what):
             hooke.identify(mesh, material, **kwargs)
+
+
+def test_identify_under_displacement_control_reports_and_fits_the_force():
+    # FEM presses (the loaded nodes held and moved, the force on them measured): every case reports its force error,
+    # and the measured forces fix the scale the positions alone cannot.
+    mesh = cylinder()
+    material = hooke.Material(14630.0, 0.45)
+    model, report = hooke.identify(mesh, material, iterations=3, held_out=1, control="displacement")
+    assert len(report["cases"]) == 13
+    assert all(0.0 <= c["identified_force_error"] < 0.5 for c in report["cases"])
+    traction_model, traction = hooke.identify(mesh, material, iterations=0, held_out=0)
+    assert all(c["identified_force_error"] == -1.0 for c in traction["cases"])  # no instrument there
+    # a reference dict marks held nodes with "prescribed"; a node cannot be both held by a support and prescribed
+    x = mesh.points
+    both = np.zeros(len(x))
+    both[0] = 1.0
+    data = {"displacement": np.zeros_like(x), "force": np.zeros_like(x), "fixed": both, "prescribed": both}
+    with pytest.raises(hooke.InvalidArgument, match="both a support and prescribed"):
+        hooke.identify(mesh, material, references=[data])
+    with pytest.raises(hooke.InvalidArgument, match="FEM references"):
+        hooke.identify(mesh, material, references=[data], control="displacement")
+    with pytest.raises(hooke.InvalidArgument, match="control"):
+        hooke.identify(mesh, material, control="sideways")

@@ -85,3 +85,32 @@ endforeach()
 if(negatives EQUAL 0)
   message(FATAL_ERROR "--negative-volume at nu = 0.1: no negative volume term in ${terms}")
 endif()
+
+# Displacement control: the loaded nodes held and moved, the force on them measured; every case reports a force error
+# in the table and the report, and the written reference files mark the held nodes.
+run_ok(identify_pressed identify ${mesh} --young 14630 --poisson 0.45 --law neohookean --strain 0.2
+       --control displacement --held-out 1 --iterations 5 --report ${OUT}/pressed.json
+       --write-reference ${OUT}/pressed_cases -o ${OUT}/pressed_model.json)
+if(NOT out MATCHES "force error: identified, analytic")
+  message(FATAL_ERROR "identify --control displacement printed no force errors:\n${out}")
+endif()
+file(READ ${OUT}/pressed.json report)
+string(JSON force GET "${report}" cases 0 identified_force_error)
+if(force LESS 0 OR force GREATER 0.5)
+  message(FATAL_ERROR "pressed.json: the first case's force error is ${force}")
+endif()
+file(READ ${OUT}/pressed_cases/case_1.vtu vtu)
+if(NOT vtu MATCHES "Name=\"prescribed\"")
+  message(FATAL_ERROR "the written reference case has no 'prescribed' array")
+endif()
+run_fails(control_with_files "applies to FEM references" ${OUT}/x.json identify ${mesh} --young 14630 --poisson 0.45
+          --reference ${OUT}/pressed_cases/case_1.vtu --control displacement -o ${OUT}/x.json)
+# The written cases are data like any measurement: identified from the files, the held nodes are held again.
+run_ok(identify_pressed_files identify ${mesh} --young 14630 --poisson 0.45 --objective forces
+       --reference ${OUT}/pressed_cases/case_1.vtu ${OUT}/pressed_cases/case_2.vtu ${OUT}/pressed_cases/case_3.vtu
+       --report ${OUT}/pressed_files.json -o ${OUT}/x.json)
+file(READ ${OUT}/pressed_files.json report)
+string(JSON force GET "${report}" cases 0 identified_force_error)
+if(force LESS 0)
+  message(FATAL_ERROR "cases read from files lost their held nodes (force error ${force})")
+endif()

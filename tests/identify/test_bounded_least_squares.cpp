@@ -134,13 +134,21 @@ TEST(BoundedLeastSquares, UnboundedProblemEqualsNormalEquations) {
   for (int j = 0; j < 20; ++j) EXPECT_NEAR(x(j), exact(j), 1e-7 * std::abs(exact(j)) + 1e-12) << j;
 }
 
-TEST(BoundedLeastSquares, ZeroColumnIsReportedAndSetToItsBound) {
+TEST(BoundedLeastSquares, ZeroColumnIsReportedAndKeepsItsStartOrBound) {
   MatX a = random_matrix(10, 4, 3);
   a.col(2).setZero();
   identify::BoundedLeastSquaresReport report;
   const VecX x = solve_bounded_least_squares(DenseOperator(a), random_vector(10, 4), VecX::Zero(4), {}, {}, &report);
   EXPECT_EQ(report.unseen, 1);
   EXPECT_EQ(x(2), 0.0);
+  // With a start, a variable no data sees keeps its start value (at least its bound), and the others still fit.
+  const VecX start = VecX::Constant(4, 2.5);
+  const VecX y = solve_bounded_least_squares(DenseOperator(a), random_vector(10, 4), VecX::Zero(4), start);
+  EXPECT_EQ(y(2), 2.5);
+  for (int j : {0, 1, 3}) EXPECT_NEAR(y(j), x(j), 1e-7 * (std::abs(x(j)) + 1.0)) << j;
+  VecX low_start = start;
+  low_start(2) = -1.0;
+  EXPECT_EQ(solve_bounded_least_squares(DenseOperator(a), random_vector(10, 4), VecX::Zero(4), low_start)(2), 0.0);
 }
 
 TEST(BoundedLeastSquares, RejectsMismatchedSizesAndNonFiniteData) {

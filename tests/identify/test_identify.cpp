@@ -1,6 +1,7 @@
 // Identification checked against independent derivations: U(x) theta against the spring and volume blocks'
 // gradients, the adjoint gradient of Eq. 1 against finite differences, and recovery of springs that made the data.
 #include <gtest/gtest.h>
+#include <algorithm>
 #include <hooke/calibrate/cauchy_split.hpp>
 #include <hooke/calibrate/method.hpp>
 #include <hooke/calibrate/spring_model.hpp>
@@ -49,8 +50,12 @@ std::vector<identify::ReferenceCase> cases_of(const mesh::Mesh& mesh, const cali
   std::normal_distribution<double> n(0.0, force);
   std::vector<identify::ReferenceCase> out;
   for (int c = 0; c < count; ++c) {
-    identify::ReferenceCase ref{"case " + std::to_string(c), test::flat_positions(mesh), VecX::Zero(model->dof_count()),
-                                std::vector<char>(model->dof_count(), 0), false};
+    identify::ReferenceCase ref{"case " + std::to_string(c),
+                                test::flat_positions(mesh),
+                                VecX::Zero(model->dof_count()),
+                                std::vector<char>(model->dof_count(), 0),
+                                false,
+                                {}};
     const int axis = c % 3;
     const double low = mesh.nodes.col(axis).minCoeff();
     for (int i = 0; i < mesh.node_count(); ++i)
@@ -63,6 +68,65 @@ std::vector<identify::ReferenceCase> cases_of(const mesh::Mesh& mesh, const cali
     const solve::StaticResult r = identify::reference_equilibrium(model, ref, {}, ref.positions);
     EXPECT_EQ(r.report.status, solve::SolveStatus::kConverged);
     ref.positions = r.positions;
+    out.push_back(ref);
+  }
+  return out;
+}
+
+// The objective's gradient at theta against central differences in 8 random parameters (steps of 1e-4 theta_j).
+void expect_central_differences(identify::PositionsObjective& objective, const VecX& theta, const VecX& gradient,
+                                unsigned seed) {
+  std::mt19937 rng(seed);
+  for (int trial = 0; trial < 8; ++trial) {
+    const int j = static_cast<int>(rng() % static_cast<unsigned>(theta.size()));
+    const double h = 1e-4 * theta(j);
+    VecX tp = theta, tm = theta;
+    tp(j) += h;
+    tm(j) -= h;
+    const double fd = (objective.value(tp) - objective.value(tm)) / (2.0 * h);
+    EXPECT_NEAR(gradient(j), fd, 1e-5 * gradient.cwiseAbs().maxCoeff()) << "parameter " << j;
+  }
+}
+
+// Reference cases under displacement control made by a known spring model: the nodes at the low end of an axis
+// clamped, those at its high end held by an instrument and moved (rigidly by `move` x the extent, plus a random part of
+// `jitter` x the extent per DOF so that springs between held nodes stretch too), the force holding each (dE/dx)
+// recorded as measured. Case c presses along axis c % axes.
+std::vector<identify::ReferenceCase> pressed_cases_of(const mesh::Mesh& mesh, const calibrate::SpringModel& springs,
+                                                      int count, double move, double jitter, unsigned seed,
+                                                      int axes = 3) {
+  const auto model = calibrate::make_model(mesh, springs);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> n(0.0, 1.0);
+  std::vector<identify::ReferenceCase> out;
+  for (int c = 0; c < count; ++c) {
+    const auto dofs = static_cast<std::size_t>(model->dof_count());
+    identify::ReferenceCase ref{"press " + std::to_string(c),
+                                test::flat_positions(mesh),
+                                VecX::Zero(model->dof_count()),
+                                std::vector<char>(dofs, 0),
+                                false,
+                                std::vector<char>(dofs, 0)};
+    const int axis = c % axes;
+    const double low = mesh.nodes.col(axis).minCoeff(), high = mesh.nodes.col(axis).maxCoeff();
+    Eigen::Vector3d direction(n(rng), n(rng), n(rng));
+    direction *= move * (high - low) / direction.norm();
+    for (int i = 0; i < mesh.node_count(); ++i)
+      for (int d = 0; d < 3; ++d) {
+        const auto dof = static_cast<std::size_t>(3 * i + d);
+        if (mesh.nodes(i, axis) < low + 1e-9) {
+          ref.fixed_dofs[dof] = 1;
+        } else if (mesh.nodes(i, axis) > high - 1e-9) {
+          ref.prescribed_dofs[dof] = 1;
+          ref.positions(3 * i + d) += direction(d) + jitter * (high - low) * n(rng);
+        }
+      }
+    const solve::StaticResult r = identify::reference_equilibrium(model, ref, {});  // ramped from rest
+    EXPECT_EQ(r.report.status, solve::SolveStatus::kConverged) << r.report.message;
+    ref.positions = r.positions;
+    const VecX g = model->gradient(r.positions);
+    for (std::size_t k = 0; k < dofs; ++k)
+      if (ref.prescribed_dofs[k]) ref.external_force(static_cast<Eigen::Index>(k)) = g(static_cast<Eigen::Index>(k));
     out.push_back(ref);
   }
   return out;
@@ -142,8 +206,12 @@ TEST(StackedForceOperator, EqualsEachCasesBasisForAnyGrouping) {
     const identify::ParameterLayout layout = identify::parameter_layout(mesh, p);
     std::vector<identify::ReferenceCase> cases;
     for (int c = 0; c < 5; ++c) {
-      identify::ReferenceCase rc{std::string("c").append(std::to_string(c)), perturbed(mesh, 2e-4, 20 + c), perturbed(mesh, 1.0, 40 + c),
-                                 std::vector<char>(static_cast<std::size_t>(mesh.dim() * mesh.node_count()), 0), false};
+      identify::ReferenceCase rc{std::string("c").append(std::to_string(c)),
+                                 perturbed(mesh, 2e-4, 20 + c),
+                                 perturbed(mesh, 1.0, 40 + c),
+                                 std::vector<char>(static_cast<std::size_t>(mesh.dim() * mesh.node_count()), 0),
+                                 false,
+                                 {}};
       for (std::size_t k = static_cast<std::size_t>(c); k < rc.fixed_dofs.size(); k += 3 + c) rc.fixed_dofs[k] = 1;
       cases.push_back(rc);
     }
@@ -207,16 +275,7 @@ TEST(PositionsObjective, AdjointGradientMatchesFiniteDifferences) {
   VecX gradient;
   const double g = objective.value(theta, &gradient);
   ASSERT_GT(g, 1e-6);
-  std::mt19937 rng(1);
-  for (int trial = 0; trial < 8; ++trial) {
-    const int j = static_cast<int>(rng() % static_cast<unsigned>(layout.size()));
-    const double h = 1e-4 * theta(j);
-    VecX tp = theta, tm = theta;
-    tp(j) += h;
-    tm(j) -= h;
-    const double fd = (objective.value(tp) - objective.value(tm)) / (2.0 * h);
-    EXPECT_NEAR(gradient(j), fd, 1e-5 * gradient.cwiseAbs().maxCoeff()) << "parameter " << j;
-  }
+  expect_central_differences(objective, theta, gradient, 1);
 }
 
 // Data made by a spring model with random k and k_V: Eq. 2 finds them again (the model is in its own class).
@@ -348,9 +407,9 @@ TEST(Identify, PositionsObjectiveDoesNotLoseWhatTheForcesFitFound) {
 
 TEST(Identify, RejectsCasesOfTheWrongSizeOrAllHeldOut) {
   const mesh::Mesh mesh = mesh::tet_box(0.01, 0.01, 0.01, 1, 1, 1);
-  identify::ReferenceCase bad{"short", VecX::Zero(3), VecX::Zero(3), std::vector<char>(3, 0), false};
+  identify::ReferenceCase bad{"short", VecX::Zero(3), VecX::Zero(3), std::vector<char>(3, 0), false, {}};
   EXPECT_THROW(identify::identify(mesh, {bad}), InvalidArgument);
-  identify::ReferenceCase held{"held", test::flat_positions(mesh), VecX::Zero(24), std::vector<char>(24, 0), true};
+  identify::ReferenceCase held{"held", test::flat_positions(mesh), VecX::Zero(24), std::vector<char>(24, 0), true, {}};
   EXPECT_THROW(identify::identify(mesh, {held}), InvalidArgument);
   held.held_out = false;
   identify::IdentifyOptions options;
@@ -387,4 +446,84 @@ TEST(Identify, ScaleRecoversTheFactorTakenOffTheModelThatMadeTheData) {
   EXPECT_THROW(identify::identify(mesh, cases, options), InvalidArgument);
   EXPECT_THROW(identify::parameter_layout(mesh, Parameters::kScale), InvalidArgument);
   EXPECT_EQ(identify::parameters_from_name("scale"), Parameters::kScale);
+}
+
+// Eq. 1 with displacement-controlled cases (the force term, whose adjoint shares the positions' solve) beside a case
+// under forces: the gradient against central differences.
+TEST(PositionsObjective, AdjointGradientMatchesFiniteDifferencesUnderDisplacementControl) {
+  const mesh::Mesh mesh = mesh::tet_box(0.02, 0.02, 0.02, 2, 2, 2);
+  const identify::ParameterLayout layout = identify::parameter_layout(mesh, Parameters::kSpringsVolume);
+  const calibrate::SpringModel truth = identify::spring_model(layout, random_parameters(layout, 11, 40.0, 2e-3));
+  std::vector<identify::ReferenceCase> cases = pressed_cases_of(mesh, truth, 2, 0.05, 0.01, 14);
+  cases.push_back(cases_of(mesh, truth, 1, 0.02, 12).front());
+  solve::StaticOptions statics;
+  statics.newton.tolerance = 1e-13;
+  identify::PositionsObjective objective(mesh, layout, cases, statics);
+  const VecX theta = random_parameters(layout, 13, 40.0, 2e-3);
+  VecX gradient;
+  const double g = objective.value(theta, &gradient);
+  ASSERT_GT(g, 1e-6);
+  expect_central_differences(objective, theta, gradient, 2);
+  // At the springs that made the data both terms vanish: positions and forces are matched.
+  EXPECT_LT(objective.value(identify::parameters_of(layout, truth)), 1e-16);
+  std::vector<double> force_errors;
+  const std::vector<double> errors = identify::position_errors(mesh, truth, cases, statics, &force_errors);
+  EXPECT_LT(*std::max_element(errors.begin(), errors.end()), 1e-8);
+  EXPECT_LT(std::max(force_errors[0], force_errors[1]), 1e-8);
+  EXPECT_EQ(force_errors[2], -1.0);  // the case under forces measures no instrument
+}
+
+// Under displacement control the positions alone cannot fix the stiffness's scale; the measured forces do. Eq. 2 on
+// presses made by a known model recovers its springs and volume terms, and the scale fit its factor in one step.
+TEST(Identify, PressesWithMeasuredForcesRecoverTheSpringsThatMadeThem) {
+  const mesh::Mesh mesh = test::irregular_mesh(mesh::ElementKind::kTet, 2, 0.2);
+  const identify::ParameterLayout layout = identify::parameter_layout(mesh, Parameters::kSpringsVolume);
+  const VecX truth = random_parameters(layout, 21, 40.0, 2e-3);
+  const auto cases = pressed_cases_of(mesh, identify::spring_model(layout, truth), 6, 0.02, 0.002, 23);
+  identify::IdentifyOptions options;
+  options.objective = identify::Objective::kForces;
+  options.parameters = Parameters::kSpringsVolume;
+  const identify::Identification id = identify::identify(mesh, cases, options);
+  EXPECT_TRUE(id.report.converged);
+  EXPECT_LT(id.report.force_residual, 1e-8);
+  EXPECT_LT((id.theta - truth).cwiseQuotient(truth).cwiseAbs().maxCoeff(), 1e-6);
+
+  options.parameters = Parameters::kScale;
+  options.start_model = identify::scaled(identify::spring_model(layout, truth), 1.0 / 1.3);
+  const identify::Identification scale = identify::identify(mesh, cases, options);
+  EXPECT_NEAR(scale.report.scale_factor, 1.3, 1e-10);
+  EXPECT_EQ(scale.report.position_iterations, 1);
+  EXPECT_LT(scale.report.position_history.back(), 1e-12);  // zero up to the cancellation in |cR - R_ref|^2
+  std::vector<identify::ReferenceCase> mixed = cases;
+  mixed.push_back(cases_of(mesh, identify::spring_model(layout, truth), 1, 0.01, 24).front());
+  EXPECT_THROW(identify::identify(mesh, mixed, options), InvalidArgument);  // one control per scale fit
+}
+
+// A rigid plate leaves the springs between held nodes unstretched: their columns are round-off, and Eq. 2 keeps
+// them at the start model's stiffness instead of letting them absorb the residual (they reached 1e14 N/m so). Every
+// case presses the same face, so the springs on it are held in all of them.
+TEST(Identify, SpringsBetweenNodesOfARigidPlateKeepTheirStartStiffness) {
+  const mesh::Mesh mesh = test::irregular_mesh(mesh::ElementKind::kTet, 2, 0.2);
+  const identify::ParameterLayout layout = identify::parameter_layout(mesh, Parameters::kSpringsVolume);
+  const VecX truth = random_parameters(layout, 21, 40.0, 2e-3);
+  const auto cases = pressed_cases_of(mesh, identify::spring_model(layout, truth), 3, 0.02, 0.0, 25, 1);
+  identify::IdentifyOptions options;
+  options.objective = identify::Objective::kForces;
+  options.parameters = Parameters::kSpringsVolume;
+  options.start_model = identify::spring_model(layout, VecX(1.2 * truth));
+  const identify::Identification id = identify::identify(mesh, cases, options);
+  int unstretched = 0;
+  const auto held = [](const identify::ReferenceCase& c, int node) {
+    return c.fixed_dofs[static_cast<std::size_t>(3 * node)] || c.prescribed_dofs[static_cast<std::size_t>(3 * node)];
+  };
+  for (int s = 0; s < layout.spring_count(); ++s) {
+    const auto [i, j] = layout.pairs[static_cast<std::size_t>(s)];
+    bool held_everywhere = true;
+    for (const auto& c : cases) held_everywhere = held_everywhere && held(c, i) && held(c, j);
+    if (!held_everywhere) continue;
+    ++unstretched;
+    EXPECT_NEAR(id.theta(s), 1.2 * truth(s), 1e-9 * truth(s)) << "spring " << s;
+  }
+  EXPECT_GT(unstretched, 0);
+  EXPECT_LT(id.theta.head(layout.spring_count()).maxCoeff(), 2.0 * truth.maxCoeff());
 }

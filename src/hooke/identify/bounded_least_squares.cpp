@@ -167,7 +167,7 @@ VecX solve_bounded_least_squares(const LinearOperator& a, const VecX& b, const V
       frozen[j] = 1;
       ++rep.unseen;
       lower_z(j) = 0.0;
-      theta0(j) = std::max(lower(j), 0.0);
+      if (!start.size()) theta0(j) = std::max(lower(j), 0.0);  // with a start it keeps its start value
     }
   }
   const ScaledOperator scaled(a, inv_scale, rep.products);
@@ -197,7 +197,7 @@ VecX solve_bounded_least_squares(const LinearOperator& a, const VecX& b, const V
   rep.residual = it.r.norm();
   VecX theta(n);
   for (Eigen::Index j = 0; j < n; ++j) {
-    theta(j) = frozen[j] ? std::max(lower(j), 0.0) : it.z(j) * inv_scale(j);
+    theta(j) = frozen[j] ? theta0(j) : it.z(j) * inv_scale(j);
     if (!frozen[j] && solver.at_bound(it, j)) {
       theta(j) = lower(j);
       ++rep.at_bound;

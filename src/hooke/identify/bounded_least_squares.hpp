@@ -35,7 +35,9 @@ struct BoundedLeastSquaresReport {
   double residual = 0.0;            ///< |A theta - b| at the end
   double projected_gradient = 0.0;  ///< relative projected-gradient norm at the end (the convergence measure)
   int at_bound = 0;                 ///< variables at their lower bound at the end
-  int unseen = 0;                   ///< columns of A that are zero: such a variable is set to max(lower, 0)
+  /// columns of A that are zero: such a variable keeps its start value (at least lower), or is max(lower, 0) without a
+  /// start
+  int unseen = 0;
   bool converged = false;
 };
 
