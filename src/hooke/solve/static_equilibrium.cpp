@@ -313,12 +313,14 @@ StaticResult solve_load(LoadStepper& newton, const StaticOptions& options, bool 
     return result;
   };
 
-  if (!start_stable)
+  // A given start is tried first, at the full load: where it converges to a stable state the base state (rest with
+  // the held DOFs where they are prescribed, which under a deep press is far from any equilibrium) is never needed.
+  if (options.start.size() > 0) newton.try_start(options.start, options.check_stability);
+  if (!start_stable && lambda_stable < 1.0)
     return finish(SolveStatus::kSingular,
                   "the tangent stiffness at the start is not positive definite: the body is "
                   "not held against rigid motion, or starts in an unstable state");
 
-  if (options.start.size() > 0) newton.try_start(options.start, options.check_stability);
   // A step whose state moved kBranchJump times faster per unit load than the last accepted one has left the path:
   // past a limit point Newton can land on a far equilibrium of another branch (a snap-through), stable but not the
   // continuation of the loading. Such a step is refused like a failed one, so the limit point is reported instead.
