@@ -4,10 +4,10 @@ import pathlib
 import re
 import sys
 
-ORDER = ["core", "mesh", "io", "material", "model", "fem", "springs", "surface", "calibrate", "solve", "identify", "experiments", "interactive"]
+ORDER = ["core", "mesh", "io", "material", "model", "fem", "springs", "surface", "contact", "calibrate", "solve", "identify", "experiments", "interactive"]
 # calibrate sits below solve: its solves are linear (core's SparseCholesky), and solve::simulate builds models by name.
 # fem, springs and surface are siblings: none may include another.
-SIBLINGS = {"fem", "springs", "surface"}
+SIBLINGS = {"fem", "springs", "surface", "contact"}
 
 root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".") / "src" / "hooke"
 bad = []

@@ -1,0 +1,133 @@
+#include <algorithm>
+#include <cmath>
+#include <hooke/contact/contact_block.hpp>
+#include <hooke/core/error.hpp>
+#include <limits>
+#include <string>
+
+namespace hooke::contact {
+
+Barrier barrier(double d, double dhat) {
+  if (!(d > 0.0)) return {std::numeric_limits<double>::infinity(), 0.0, 0.0};
+  if (d >= dhat) return {0.0, 0.0, 0.0};
+  const double g = d - dhat, log_ratio = std::log(d / dhat);
+  return {-g * g * log_ratio, -2.0 * g * log_ratio - g * g / d, -2.0 * log_ratio - 4.0 * g / d + g * g / (d * d)};
+}
+
+ContactBlock::ContactBlock(std::vector<int> nodes, VecX stiffness, double activation,
+                           std::shared_ptr<const RigidTool> tool)
+    : m_nodes(std::move(nodes)), m_stiffness(std::move(stiffness)), m_activation(activation), m_tool(std::move(tool)) {
+  if (!m_tool) throw InvalidArgument("contact: no tool");
+  if (static_cast<Eigen::Index>(m_nodes.size()) != m_stiffness.size())
+    throw InvalidArgument("contact: one stiffness per node (" + std::to_string(m_nodes.size()) + " nodes, " +
+                          std::to_string(m_stiffness.size()) + " stiffnesses)");
+  if (!(activation > 0.0 && std::isfinite(activation)))
+    throw InvalidArgument("contact: the activation distance must be > 0 m, not " + std::to_string(activation));
+  for (Eigen::Index i = 0; i < m_stiffness.size(); ++i)
+    if (!(m_stiffness(i) > 0.0 && std::isfinite(m_stiffness(i))))
+      throw InvalidArgument("contact: node " + std::to_string(m_nodes[static_cast<std::size_t>(i)]) +
+                            " has stiffness " + std::to_string(m_stiffness(i)) + " (must be > 0 N/m)");
+}
+
+double ContactBlock::energy(const Eigen::Ref<const VecX>& x) const {
+  double e = 0.0;
+  for (std::size_t i = 0; i < m_nodes.size(); ++i) {
+    const SurfaceDistance s = m_tool->distance(x.segment<3>(3 * m_nodes[i]));
+    if (s.distance >= m_activation) continue;
+    const double b = barrier(s.distance, m_activation).value;
+    if (!std::isfinite(b)) return std::numeric_limits<double>::infinity();
+    e += m_stiffness(static_cast<Eigen::Index>(i)) * b;
+  }
+  return e;
+}
+
+void ContactBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
+  energy_and_add_gradient(x, gradient);
+}
+
+double ContactBlock::energy_and_add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
+  double e = 0.0;
+  for (std::size_t i = 0; i < m_nodes.size(); ++i) {
+    const SurfaceDistance s = m_tool->distance(x.segment<3>(3 * m_nodes[i]));
+    if (s.distance >= m_activation) continue;
+    const Barrier b = barrier(s.distance, m_activation);
+    const double k = m_stiffness(static_cast<Eigen::Index>(i));
+    e += k * b.value;
+    if (std::isfinite(b.value)) gradient.segment<3>(3 * m_nodes[i]) += k * b.slope * s.normal;
+  }
+  return e;
+}
+
+RowMatXi ContactBlock::element_nodes() const {
+  RowMatXi out(static_cast<Eigen::Index>(m_nodes.size()), 1);
+  for (std::size_t i = 0; i < m_nodes.size(); ++i) out(static_cast<Eigen::Index>(i), 0) = m_nodes[i];
+  return out;
+}
+
+void ContactBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter,
+                                      double* values, bool project_psd) const {
+  for (std::size_t i = 0; i < m_nodes.size(); ++i) {
+    const SurfaceDistance s = m_tool->distance(x.segment<3>(3 * m_nodes[i]));
+    if (s.distance >= m_activation || !(s.distance > 0.0)) continue;
+    const Barrier b = barrier(s.distance, m_activation);
+    const double k = m_stiffness(static_cast<Eigen::Index>(i));
+    // kappa (b'' n n^T + b' C): b'' > 0 and b' <= 0 on (0, dhat), C positive semi-definite for convex tools. The
+    // projection keeps the first part and the second where positive: the curvature term is negative semi-definite.
+    Mat3 h = k * b.curvature * s.normal * s.normal.transpose();
+    if (!project_psd) h += k * b.slope * s.curvature;
+    scatter.add<3, 1>(static_cast<int>(i), h, values);
+  }
+}
+
+Vec3 ContactBlock::tool_force(const Eigen::Ref<const VecX>& x) const {
+  Vec3 f = Vec3::Zero();
+  for (std::size_t i = 0; i < m_nodes.size(); ++i) {
+    const SurfaceDistance s = m_tool->distance(x.segment<3>(3 * m_nodes[i]));
+    if (s.distance < m_activation)
+      f += m_stiffness(static_cast<Eigen::Index>(i)) * barrier(s.distance, m_activation).slope * s.normal;
+  }
+  return f;
+}
+
+Vec3 ContactBlock::tool_torque(const Eigen::Ref<const VecX>& x) const {
+  Vec3 t = Vec3::Zero();
+  for (std::size_t i = 0; i < m_nodes.size(); ++i) {
+    const SurfaceDistance s = m_tool->distance(x.segment<3>(3 * m_nodes[i]));
+    if (s.distance < m_activation)
+      t += (s.closest - m_tool->pose().position)
+               .cross(Vec3(m_stiffness(static_cast<Eigen::Index>(i)) * barrier(s.distance, m_activation).slope *
+                           s.normal));
+  }
+  return t;
+}
+
+int ContactBlock::push_out(Eigen::Ref<VecX> x, double distance) const {
+  int moved = 0;
+  for (int node : m_nodes) {
+    const SurfaceDistance s = m_tool->distance(x.segment<3>(3 * node));
+    if (s.distance >= distance) continue;
+    x.segment<3>(3 * node) = s.closest + distance * s.normal;
+    ++moved;
+  }
+  return moved;
+}
+
+int ContactBlock::active_count(const Eigen::Ref<const VecX>& x) const {
+  int n = 0;
+  for (int node : m_nodes) n += m_tool->distance(x.segment<3>(3 * node)).distance < m_activation;
+  return n;
+}
+
+double ContactBlock::smallest_distance(const Eigen::Ref<const VecX>& x) const {
+  double d = std::numeric_limits<double>::infinity();
+  for (int node : m_nodes) d = std::min(d, m_tool->distance(x.segment<3>(3 * node)).distance);
+  return d;
+}
+
+VecX contact_stiffness(double youngs_modulus, const VecX& boundary_area, double activation) {
+  if (!(youngs_modulus > 0.0) || !(activation > 0.0))
+    throw InvalidArgument("contact stiffness: E and the activation distance must be > 0");
+  return youngs_modulus * boundary_area / activation;
+}
+
+}  // namespace hooke::contact

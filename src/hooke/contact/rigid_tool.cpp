@@ -1,0 +1,97 @@
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <hooke/contact/rigid_tool.hpp>
+#include <hooke/core/error.hpp>
+#include <hooke/core/settings.hpp>
+#include <string>
+
+namespace hooke::contact {
+
+std::string_view tool_shape_name(ToolShape shape) {
+  switch (shape) {
+    case ToolShape::kSphere: return "sphere";
+    case ToolShape::kCapsule: return "capsule";
+    case ToolShape::kHalfSpace: return "plane";
+  }
+  return "?";
+}
+
+RigidTool::RigidTool(ToolShape shape, double radius, double length)
+    : m_shape(shape), m_radius(radius), m_length(length) {
+  if (shape != ToolShape::kHalfSpace && !(radius > 0.0 && std::isfinite(radius)))
+    throw InvalidArgument("a " + std::string(tool_shape_name(shape)) + " tool needs a radius > 0 m, not " +
+                          std::to_string(radius));
+  if (shape == ToolShape::kCapsule && !(length >= 0.0 && std::isfinite(length)))
+    throw InvalidArgument("a capsule tool needs a length >= 0 m, not " + std::to_string(length));
+  if (shape != ToolShape::kCapsule) m_length = 0.0;
+  if (shape == ToolShape::kHalfSpace) m_radius = 0.0;
+}
+
+void RigidTool::set_pose(const Pose& pose) {
+  if (!pose.position.allFinite()) throw InvalidArgument("a tool's position must be finite");
+  if (!pose.rotation.allFinite() || (pose.rotation.transpose() * pose.rotation - Mat3::Identity()).norm() > 1e-9 ||
+      pose.rotation.determinant() < 0.0)
+    throw InvalidArgument("a tool's orientation must be a rotation matrix");
+  m_pose = pose;
+}
+
+SurfaceDistance RigidTool::distance(const Vec3& point) const {
+  SurfaceDistance out;
+  const Vec3 axis = m_pose.rotation.col(2);
+  if (m_shape == ToolShape::kHalfSpace) {
+    out.distance = axis.dot(point - m_pose.position);
+    out.normal = axis;
+    out.closest = point - out.distance * axis;
+    return out;
+  }
+  // Sphere and capsule: the distance to a segment (of length 0 for the sphere) minus the radius.
+  const Vec3 start = m_pose.position - 0.5 * m_length * axis;
+  const double along = (point - start).dot(axis);
+  const double t = std::clamp(along, 0.0, m_length);
+  const Vec3 r = point - (start + t * axis);
+  const double rho = r.norm();
+  out.distance = rho - m_radius;
+  if (!(rho > 1e-12 * m_radius)) {  // on the core: the distance has no derivative there
+    out.normal = axis;
+    out.closest = start + t * axis + m_radius * axis;
+    return out;
+  }
+  out.normal = r / rho;
+  out.curvature = (Mat3::Identity() - out.normal * out.normal.transpose()) / rho;
+  if (m_length > 0.0 && along > 0.0 && along < m_length)  // beside the shaft: no curvature along it
+    out.curvature -= axis * axis.transpose() / rho;
+  out.closest = start + t * axis + m_radius * out.normal;
+  return out;
+}
+
+std::string RigidTool::description() const {
+  char text[96];
+  if (m_shape == ToolShape::kSphere)
+    std::snprintf(text, sizeof text, "sphere:%g", m_radius);
+  else if (m_shape == ToolShape::kCapsule)
+    std::snprintf(text, sizeof text, "capsule:%g,%g", m_radius, m_length);
+  else
+    std::snprintf(text, sizeof text, "plane");
+  return text;
+}
+
+RigidTool parse_tool(std::string_view text, double metres_per_unit) {
+  const std::string forms = " (use sphere:R, capsule:R,L or plane; R, L in the mesh's unit)";
+  const std::size_t colon = text.find(':');
+  const std::string_view kind = text.substr(0, colon);
+  const std::string_view sizes = colon == std::string_view::npos ? std::string_view{} : text.substr(colon + 1);
+  const std::string where = "tool '" + std::string(text) + "'";
+  if (kind == "plane" && sizes.empty()) return RigidTool(ToolShape::kHalfSpace);
+  if (kind == "sphere" && !sizes.empty())
+    return RigidTool(ToolShape::kSphere, metres_per_unit * settings::parse_number(where, sizes));
+  if (kind == "capsule") {
+    const std::size_t comma = sizes.find(',');
+    if (comma != std::string_view::npos)
+      return RigidTool(ToolShape::kCapsule, metres_per_unit * settings::parse_number(where, sizes.substr(0, comma)),
+                       metres_per_unit * settings::parse_number(where, sizes.substr(comma + 1)));
+  }
+  throw InvalidArgument("unknown " + where + forms);
+}
+
+}  // namespace hooke::contact

@@ -1,0 +1,68 @@
+#pragma once
+/// A rigid instrument or obstacle: its shape (a sphere, a capsule, a half-space) and its pose, and the signed distance
+/// of a point to its surface with that distance's first and second derivatives (what a contact energy on the distance
+/// needs for its gradient and Hessian). docs/contact.md.
+#include <hooke/core/types.hpp>
+#include <string>
+#include <string_view>
+
+namespace hooke::contact {
+
+enum class ToolShape {
+  kSphere,     ///< "sphere": radius R about the pose's position (a fingertip, a probe tip)
+  kCapsule,    ///< "capsule": the points within R of a segment of length L along the pose's local z axis, centred
+               ///< on its position (an instrument's shaft with a round tip)
+  kHalfSpace,  ///< "plane": the points below the plane through the position with the pose's local z as outward
+               ///< normal (a table, a floor: an obstacle)
+};
+
+std::string_view tool_shape_name(ToolShape shape);
+
+/// Where a rigid body is: the position of its reference point (m) and its orientation (local to world).
+struct Pose {
+  Vec3 position = Vec3::Zero();
+  Mat3 rotation = Mat3::Identity();
+};
+
+/// A point's signed distance to a tool's surface and its derivatives in the point.
+struct SurfaceDistance {
+  double distance = 0.0;          ///< m; < 0 inside the tool
+  Vec3 normal = Vec3::Zero();     ///< d distance / d point: the unit outward normal at the closest surface point
+  Mat3 curvature = Mat3::Zero();  ///< d2 distance / d point2, 1/m (positive semi-definite for these convex shapes)
+  Vec3 closest = Vec3::Zero();    ///< the closest point on the tool's surface, m
+};
+
+class RigidTool {
+ public:
+  /// @param shape   the kind
+  /// @param radius  sphere and capsule radius, m (> 0; ignored by the half-space)
+  /// @param length  capsule segment length, m (>= 0; ignored otherwise)
+  /// @throws InvalidArgument for a non-finite or out-of-range size
+  RigidTool(ToolShape shape, double radius = 0.0, double length = 0.0);
+
+  ToolShape shape() const { return m_shape; }
+  double radius() const { return m_radius; }
+  double length() const { return m_length; }
+  const Pose& pose() const { return m_pose; }
+  /// Moves the tool (m; a rotation matrix). Not thread-safe with distance(): set it between solves or steps.
+  /// @throws InvalidArgument for a non-finite position or a matrix that is not a rotation (|R^T R - I| > 1e-9)
+  void set_pose(const Pose& pose);
+
+  /// The signed distance of `point` (m) to the surface with its derivatives. Where the derivatives are not defined
+  /// (the point on a sphere's centre or a capsule's axis) the normal is the pose's local z and the curvature zero.
+  SurfaceDistance distance(const Vec3& point) const;
+
+  /// "sphere:R", "capsule:R,L" or "plane" (radius, length in m).
+  std::string description() const;
+
+ private:
+  ToolShape m_shape;
+  double m_radius, m_length;
+  Pose m_pose;
+};
+
+/// Parses "sphere:R", "capsule:R,L" or "plane" (R, L in metres times `metres_per_unit`).
+/// @throws InvalidArgument naming the text and the forms accepted
+RigidTool parse_tool(std::string_view text, double metres_per_unit = 1.0);
+
+}  // namespace hooke::contact
