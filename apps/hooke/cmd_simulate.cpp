@@ -1,6 +1,12 @@
 // hooke simulate (MESH --young PA --poisson NU --method NAME | --model MODEL.json) --integrator NAME --dt S
 // --steps N [...] -o DIR: dynamics of a calibrated model with a ParaView time series and a timing report.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <hooke/contact/rigid_tool.hpp>
+#include <hooke/contact/tool_path.hpp>
+#include <hooke/core/atomic_file.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/quantile.hpp>
 #include <hooke/io/series.hpp>
@@ -20,6 +26,7 @@ struct SimulateCli {
   solve::SimulationOptions run;
   bool free_body = false, no_reorder = false;
   std::vector<double> probe_offset, probe_force;
+  std::string tool, tool_path;  ///< --tool sphere:R|capsule:R,L|plane, --tool-path FILE (m, s)
 };
 
 VecX as_vector(const std::vector<double>& v) {
@@ -38,6 +45,16 @@ void print_summary(const SimulateCli& o, const calibrate::CalibratedModel& model
   std::printf("  energy    %.6g J at start, %.6g J at end (kinetic %.6g J)\n", s.energy_start, s.energy_end,
               s.kinetic_end);
   if (o.run.probe_node >= 0) std::printf("  probe     max force on the device %.6g N\n", s.max_probe_force);
+  if (!s.tool_force.empty()) {
+    double largest = 0.0;
+    for (const auto& f : s.tool_force) largest = std::max(largest, std::hypot(f[1], f[2], f[3]));
+    const auto& last = s.tool_force.back();
+    std::printf(
+        "  tool      %s: force on it %.6g, %.6g, %.6g N at the end (largest %.6g N); smallest gap %.3g m "
+        "(activation %.3g m), %d nodes pushed out of its way\n",
+        o.run.tool->description().c_str(), last[1], last[2], last[3], largest, s.smallest_gap, s.contact_distance,
+        s.pushed_nodes);
+  }
   if (s.beyond_stable_dt > 0)
     std::printf("  warning   %d steps beyond the explicit stability limit %.4g s\n", s.beyond_stable_dt,
                 s.stable_time_step);
@@ -52,13 +69,28 @@ int run_simulate(SimulateCli o) {
   o.run.reorder = !o.no_reorder;
   o.run.probe_offset = as_vector(o.probe_offset);
   o.run.probe_force = as_vector(o.probe_force);
+  if (o.tool.empty() != o.tool_path.empty()) throw InvalidArgument("--tool and --tool-path go together");
+  if (!o.tool.empty()) {
+    o.run.tool = std::make_shared<contact::RigidTool>(contact::parse_tool(o.tool));
+    o.run.tool_path = contact::read_tool_path(o.tool_path);
+  }
   io::SeriesWriter series(o.out_dir, model.mesh);  // frames appear only when the whole run succeeded
   const int d = model.mesh.dim();
   const solve::SimulationSummary s = solve::simulate(model, o.run, [&](int, double t, const VecX& u, const VecX& v) {
     series.write(t, {{"displacement", d, u}, {"velocity", d, v}});
   });
   const int frames = series.frame_count();
-  print_summary(o, model, s, series.commit().string(), frames);
+  const std::string pvd = series.commit().string();
+  if (!s.tool_force.empty())
+    write_file_atomically(std::filesystem::path(o.out_dir) / "tool_force.csv", [&](std::ostream& out) {
+      out << "t,fx,fy,fz\n";
+      char row[128];
+      for (const auto& f : s.tool_force) {
+        std::snprintf(row, sizeof row, "%.9g,%.9g,%.9g,%.9g\n", f[0], f[1], f[2], f[3]);
+        out << row;
+      }
+    });
+  print_summary(o, model, s, pvd, frames);
   return 0;
 }
 
@@ -84,6 +116,16 @@ Action add_simulate_command(CLI::App& app) {
       ->delimiter(',');
   cmd->add_option("--probe-force", o->probe_force, "Push the probe node with this force (N), ramped over the run")
       ->delimiter(',');
+  cmd->add_option("--tool", o->tool,
+                  "A rigid tool pressing the body (docs/contact.md): sphere:R, capsule:R,L (m) or plane; with "
+                  "--tool-path");
+  cmd->add_option("--tool-path", o->tool_path,
+                  "The tool's poses over time: CSV with columns t,x,y,z (s, m) and optionally qw,qx,qy,qz; "
+                  "writes DIR/tool_force.csv (t,fx,fy,fz: the force the body exerts on the tool, N)");
+  cmd->add_option("--contact-distance", o->run.contact_distance,
+                  "The contact barrier's activation distance, m (0: 1 % of the mean boundary edge)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   cmd->add_option("--every", o->run.every, "Write a frame every this many steps (default: about 100 frames)");
   cmd->add_option("-o,--output", o->out_dir, "Folder for simulation.pvd and frames/")->required();
   return [o] { return run_simulate(*o); };

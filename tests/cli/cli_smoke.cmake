@@ -72,6 +72,32 @@ if(NOT rc EQUAL 2)
   message(FATAL_ERROR "--iterations 0 must fail with exit code 2 (got ${rc}: ${err})")
 endif()
 
+# A sphere tool pressed 3 mm into the top of the cylinder along a path table: tool_force.csv has a row per step with
+# the body pushing the tool up, and a path without its columns is refused.
+file(WRITE ${OUT}/path.csv "t,x,y,z\n0,0,0,0.0255\n0.05,0,0,0.022\n")
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --integrator implicit-euler
+                        --dt 0.002 --steps 40 --damping-mass 40 --tool sphere:0.005 --tool-path ${OUT}/path.csv
+                        -o ${OUT}/sim_tool RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0 OR NOT EXISTS ${OUT}/sim_tool/tool_force.csv OR NOT out MATCHES "tool      sphere:0.005: force on it")
+  message(FATAL_ERROR "hooke simulate --tool failed: ${rc}")
+endif()
+file(STRINGS ${OUT}/sim_tool/tool_force.csv rows)
+list(LENGTH rows count)
+list(GET rows -1 last)
+string(REPLACE "," ";" last "${last}")
+list(GET last 3 fz)
+if(NOT count EQUAL 41 OR NOT fz GREATER 0.01)
+  message(FATAL_ERROR "tool_force.csv: ${count} lines, last fz ${fz} N")
+endif()
+file(WRITE ${OUT}/bad_path.csv "time,x,y,z\n0,0,0,0.03\n")
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --steps 2
+                        --tool sphere:0.005 --tool-path ${OUT}/bad_path.csv -o ${OUT}/sim_bad_tool
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "no column 't'" OR EXISTS ${OUT}/sim_bad_tool/simulation.pvd)
+  message(FATAL_ERROR "a tool path without a t column must fail with exit code 2 (got ${rc}: ${err})")
+endif()
+
 # The surface model from the command line: simulate a closed surface with a probe, compare it with the FEM of
 # its radially tetrahedralised volume.
 execute_process(COMMAND ${HOOKE} simulate ${MESHES}/sphere_surface.msh --young 1000 --poisson 0.3 --method surface

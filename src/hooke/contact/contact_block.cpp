@@ -2,6 +2,7 @@
 #include <cmath>
 #include <hooke/contact/contact_block.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/model/support.hpp>
 #include <limits>
 #include <string>
 
@@ -128,6 +129,35 @@ VecX contact_stiffness(double youngs_modulus, const VecX& boundary_area, double 
   if (!(youngs_modulus > 0.0) || !(activation > 0.0))
     throw InvalidArgument("contact stiffness: E and the activation distance must be > 0");
   return youngs_modulus * boundary_area / activation;
+}
+
+std::unique_ptr<ContactBlock> boundary_contact(const mesh::Mesh& mesh, double youngs_modulus,
+                                               std::shared_ptr<const RigidTool> tool, double activation) {
+  if (mesh.dim() != 3) throw InvalidArgument("contact needs a 3D mesh (tets or a closed surface of triangles)");
+  if (activation < 0.0) throw InvalidArgument("contact: the activation distance must be >= 0 m (0: automatic)");
+  RowMatXi triangles;
+  if (mesh.kind == mesh::ElementKind::kSurfaceTriangle)
+    triangles = mesh.elements;
+  else
+    triangles = model::boundary_facets_with_geometry(mesh).facets;
+  VecX area = VecX::Zero(mesh.node_count());
+  double edges = 0.0;
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    const Vec3 a = mesh.nodes.row(triangles(f, 0)), b = mesh.nodes.row(triangles(f, 1)),
+               c = mesh.nodes.row(triangles(f, 2));
+    const double share = 0.5 * (b - a).cross(c - a).norm() / 3.0;
+    for (int k = 0; k < 3; ++k) area(triangles(f, k)) += share;
+    edges += (b - a).norm() + (c - b).norm() + (a - c).norm();
+  }
+  if (triangles.rows() == 0) throw InvalidArgument("contact: " + mesh.source + " has no boundary");
+  if (activation == 0.0) activation = 0.01 * edges / (3.0 * static_cast<double>(triangles.rows()));
+  std::vector<int> nodes;
+  std::vector<double> shares;
+  for (int i = 0; i < mesh.node_count(); ++i)
+    if (area(i) > 0.0) nodes.push_back(i), shares.push_back(area(i));
+  const VecX kappa = contact_stiffness(
+      youngs_modulus, Eigen::Map<const VecX>(shares.data(), static_cast<Eigen::Index>(shares.size())), activation);
+  return std::make_unique<ContactBlock>(std::move(nodes), kappa, activation, std::move(tool));
 }
 
 }  // namespace hooke::contact

@@ -5,6 +5,7 @@
 /// every node outside the tool: the energy is +infinity at and beyond contact, and a line search never accepts such a
 /// state. docs/contact.md.
 #include <hooke/contact/rigid_tool.hpp>
+#include <hooke/mesh/mesh.hpp>
 #include <hooke/model/term_block.hpp>
 #include <memory>
 #include <vector>
@@ -66,5 +67,13 @@ class ContactBlock final : public model::TermBlock {
 /// far beyond any tissue's) before d reaches dhat / 2, so a node in contact stays within dhat of the tool.
 /// @param boundary_area  per node of `nodes`, m^2 (> 0)
 VecX contact_stiffness(double youngs_modulus, const VecX& boundary_area, double activation);
+
+/// A contact block on the boundary of `mesh` against `tool`: the nodes of its boundary triangles (tets) or all its
+/// nodes (a closed surface of triangles, the surface model's mesh), each with its share of the boundary area and
+/// kappa from contact_stiffness.
+/// @param activation  dhat, m; 0: 1 % of the mean boundary edge length
+/// @throws InvalidArgument for a 2D mesh (contact is 3D) or a negative activation
+std::unique_ptr<ContactBlock> boundary_contact(const mesh::Mesh& mesh, double youngs_modulus,
+                                               std::shared_ptr<const RigidTool> tool, double activation = 0.0);
 
 }  // namespace hooke::contact

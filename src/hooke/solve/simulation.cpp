@@ -2,11 +2,13 @@
 #include <chrono>
 #include <cmath>
 #include <hooke/calibrate/model_factory.hpp>
+#include <hooke/contact/contact_block.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <hooke/mesh/reorder.hpp>
 #include <hooke/model/load_case.hpp>
 #include <hooke/solve/simulation.hpp>
+#include <limits>
 #include <numeric>
 #include <string>
 
@@ -16,6 +18,8 @@ namespace {
 void check_options(const SimulationOptions& o, int dim, int nodes) {
   validate(o.dynamics);
   if (o.steps < 1) throw InvalidArgument("the number of steps must be at least 1");
+  if (o.tool && o.tool_path.empty()) throw InvalidArgument("a tool needs a path (its pose over time)");
+  if (o.tool && dim != 3) throw InvalidArgument("a tool presses 3D bodies only");
   if (o.probe_node < 0) return;
   const bool drive = o.probe_offset.size() > 0, push = o.probe_force.size() > 0;
   const VecX& v = drive ? o.probe_offset : o.probe_force;
@@ -52,6 +56,13 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
   VecX out_u(d * n), out_v(d * n);
   const calibrate::BuiltModel built = calibrate::build_model(cm);
   const VecX& rest = built.model->rest_positions();
+  const contact::ContactBlock* contact = nullptr;
+  if (o.tool) {  // the barrier against the tool joins the model's terms (docs/contact.md)
+    o.tool->set_pose(o.tool_path.at(0.0));
+    auto block = contact::boundary_contact(cm.mesh, cm.material.youngs_modulus, o.tool, o.contact_distance);
+    contact = block.get();
+    built.model->add(std::move(block));
+  }
 
   model::Problem problem = model::make_problem(built.model);
   if (o.clamp_bottom && !cm.surface)
@@ -75,8 +86,24 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
   }
   SimulationSummary s;
   s.stable_time_step = sim.stable_time_step();
+  // Before a step the tool moves; nodes it has passed (it outran their gap) are put back outside it, so the step
+  // starts from an admissible state.
+  auto move_tool = [&](double t) {
+    o.tool->set_pose(o.tool_path.at(t));
+    VecX x = sim.positions();
+    const int pushed = contact->push_out(x, 0.5 * contact->activation());
+    if (pushed == 0) return;
+    s.pushed_nodes += pushed;
+    sim.set_state(x, sim.velocities());
+  };
+  if (contact) {
+    s.contact_distance = contact->activation();
+    s.smallest_gap = std::numeric_limits<double>::infinity();
+    move_tool(0.0);
+  }
   auto emit = [&](int k) {
-    if (!std::isfinite(sim.potential_energy())) fail_step("inverted an element", k, o, s.stable_time_step);
+    if (!std::isfinite(sim.potential_energy()))
+      fail_step(contact ? "inverted an element or entered the tool" : "inverted an element", k, o, s.stable_time_step);
     for (int i = 0; i < n; ++i) {
       const int j = old_to_new[static_cast<size_t>(i)];
       out_u.segment(d * i, d) = sim.positions().segment(d * j, d) - rest.segment(d * j, d);
@@ -95,6 +122,7 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
           ramp * (probe.drive_position ? o.probe_offset : o.probe_force);
       sim.set_probe(probe);
     }
+    if (contact) move_tool(k * o.dynamics.dt);
     const auto t0 = std::chrono::steady_clock::now();
     const StepReport r = sim.step(o.dynamics.dt);
     s.step_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
@@ -108,6 +136,11 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
     s.not_converged += r.converged ? 0 : 1;
     s.iterations += r.iterations;
     s.beyond_stable_dt += r.beyond_stable_dt ? 1 : 0;
+    if (contact) {
+      const Vec3 f = contact->tool_force(sim.positions());
+      s.tool_force.push_back({sim.time(), f.x(), f.y(), f.z()});
+      s.smallest_gap = std::min(s.smallest_gap, contact->smallest_distance(sim.positions()));
+    }
     if (r.probe_force.size() > 0) s.max_probe_force = std::max(s.max_probe_force, r.probe_force.norm());
     if (k % every == 0 || k == o.steps) emit(k);
   }

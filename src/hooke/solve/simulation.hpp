@@ -2,10 +2,13 @@
 /// A scripted dynamics run of any calibrated model (what `hooke simulate` does): bottom clamped (spring and FEM
 /// models) or held by its anchors (surface model), gravity, Rayleigh damping, a probe ramped over the run, frames
 /// handed to a sink, and a timing and energy summary.
+#include <array>
 #include <functional>
 #include <hooke/calibrate/calibrated_model.hpp>
+#include <hooke/contact/tool_path.hpp>
 #include <hooke/solve/dynamics_setup.hpp>
 #include <hooke/solve/simulator.hpp>
+#include <memory>
 #include <vector>
 
 namespace hooke::solve {
@@ -23,6 +26,12 @@ struct SimulationOptions {
   /// Keep going when a step ends above the Newton tolerance (counted in SimulationSummary::not_converged) instead
   /// of failing with SolverFailure at that step.
   bool allow_unconverged = false;
+  /// A rigid tool pressing the body (docs/contact.md): its shape, moved along `tool_path` (pose at each step's end
+  /// time), against the body's boundary with the contact barrier of activation distance `contact_distance` (m; 0:
+  /// 1 % of the mean boundary edge). None by default. Shared: simulate sets its pose.
+  std::shared_ptr<contact::RigidTool> tool;
+  contact::ToolPath tool_path;
+  double contact_distance = 0.0;
 };
 
 struct SimulationSummary {
@@ -36,6 +45,11 @@ struct SimulationSummary {
   double kinetic_end = 0.0;       ///< J
   double max_probe_force = 0.0;   ///< largest |force on the device| over the run, N
   double time = 0.0;              ///< simulated time, s
+  /// With a tool, per step: the step's end time (s) and the force the body exerts on the tool there (N, x y z).
+  std::vector<std::array<double, 4>> tool_force;
+  double smallest_gap = 0.0;      ///< with a tool: the smallest node-to-tool distance after any step, m (> 0)
+  int pushed_nodes = 0;           ///< nodes moved out of the tool's way before a step (the tool outran their gap)
+  double contact_distance = 0.0;  ///< the activation distance used, m
 };
 
 /// Receives a frame: step number, time (s), displacement and velocity (flat, in the model's node order).
