@@ -20,6 +20,7 @@ PYBIND11_MODULE(_hooke, m) {
   hooke::python::define_identify(m);
   hooke::python::define_static_equilibrium(m);
   hooke::python::define_simulator(m);
+  hooke::python::define_contact(m);
   hooke::python::define_live_simulation(m);
   // The library's messages go to Python's logging ("hooke" logger; the package installs a NullHandler, so nothing
   // prints unless the application configures logging). Messages may come from threads without the GIL.

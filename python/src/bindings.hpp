@@ -18,6 +18,7 @@ void define_reproduce(pybind11::module_& m);
 void define_identify(pybind11::module_& m);
 void define_static_equilibrium(pybind11::module_& m);
 void define_simulator(pybind11::module_& m);
+void define_contact(pybind11::module_& m);
 void define_live_simulation(pybind11::module_& m);
 
 }  // namespace hooke::python

@@ -21,6 +21,18 @@ void ProblemData::apply_load(model::LoadKind kind, double traction, double strai
   model::apply(model::make_load_case(model.mesh, kind, t, model.material.thickness), problem);
 }
 
+PyTool ProblemData::add_tool(const std::string& shape, const contact::Pose& pose, double distance) {
+  auto tool = std::make_shared<contact::RigidTool>(contact::parse_tool(shape));
+  tool->set_pose(pose);
+  std::shared_ptr<const contact::ContactBlock> block =
+      contact::boundary_contact(model.mesh, model.material.youngs_modulus, tool, distance);
+  contacts.push_back(block);
+  const calibrate::BuiltModel built = calibrate::build_model(model);
+  for (const auto& c : contacts) built.model->add(std::make_unique<contact::ContactBlock>(*c));
+  problem.model = built.model;
+  return {tool, block, model.mesh.node_count()};
+}
+
 pybind11::array_t<double> ProblemData::rows(const VecX& flat) const {
   const int d = problem.model->dim();
   pybind11::array_t<double> a({static_cast<pybind11::ssize_t>(flat.size() / d), static_cast<pybind11::ssize_t>(d)});

@@ -2,6 +2,7 @@
 // What a Python hooke.Problem holds: the calibrated model (for load cases and masses), its built term blocks and
 // the solver's problem.
 #include <pybind11/numpy.h>
+#include <contact/tool.hpp>
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/model/load_case.hpp>
 #include <hooke/model/problem.hpp>
@@ -19,6 +20,11 @@ struct ProblemData {
   void fix_nodes(const std::vector<int>& nodes);
   // The load case `kind` at `traction` (Pa) or, when strain > 0, at the traction giving that mean linear-FEM strain.
   void apply_load(model::LoadKind kind, double traction, double strain);
+  // A rigid tool (contact::parse_tool text) at `pose` against the body's boundary (contact::boundary_contact with
+  // activation `distance`, 0: automatic). The problem's model is rebuilt with every tool's contact block: simulators
+  // and solves made before keep the model they had.
+  PyTool add_tool(const std::string& shape, const contact::Pose& pose, double distance);
+  std::vector<std::shared_ptr<const contact::ContactBlock>> contacts;  ///< one per tool, in the order added
   // Flat positions as an (N, dim) array (a copy).
   pybind11::array_t<double> rows(const VecX& flat) const;
 };

@@ -8,6 +8,7 @@
 #include <core/arrays.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <hooke/solve/simulator_settings.hpp>
+#include <hooke/solve/tool_press.hpp>
 #include <optional>
 #include <solve/problem.hpp>
 
@@ -99,6 +100,19 @@ void define_simulator(py::module_& m) {
                              "(N, dim) velocities, m/s: a read-only view.")
       .def_property_readonly(
           "time", [](const PySimulator& s) { return s.sim.time(); }, "s")
+      .def(
+          "move_tool",
+          [](PySimulator& s, PyTool& t, const py::object& position, const py::object& rotation) {
+            contact::Pose pose;
+            pose.position = vector_argument(position, "position", 3);
+            pose.rotation =
+                rotation.is_none() ? t.tool->pose().rotation : Mat3(matrix_argument(rotation, "rotation", 3, 3));
+            return solve::move_tool(s.sim, *t.block, *t.tool, pose);
+          },
+          py::arg("tool"), py::arg("position"), py::arg("rotation") = py::none(),
+          "Moves a tool of the simulator's problem to `position` (m; `rotation` (3, 3) or None: kept) between steps, "
+          "putting back outside it the nodes it passed; returns how many (solve::move_tool). The tool must have been "
+          "added to the problem before this simulator was made.")
       .def(
           "grab",
           [](PySimulator& s, const std::vector<int>& nodes) {

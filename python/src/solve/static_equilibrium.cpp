@@ -58,6 +58,20 @@ void define_static_equilibrium(py::module_& m) {
           "fix_nodes", [](ProblemData& p, const std::vector<int>& nodes) { p.fix_nodes(nodes); }, py::arg("nodes"),
           "Holds the nodes at their rest positions.")
       .def(
+          "add_tool",
+          [](ProblemData& p, const std::string& shape, const py::object& position, const py::object& rotation,
+             double contact_distance) {
+            contact::Pose pose;
+            pose.position = vector_argument(position, "position", 3);
+            if (!rotation.is_none()) pose.rotation = matrix_argument(rotation, "rotation", 3, 3);
+            return p.add_tool(shape, pose, contact_distance);
+          },
+          py::arg("shape"), py::arg("position"), py::arg("rotation") = py::none(), py::arg("contact_distance") = 0.0,
+          "A rigid tool against the body's boundary (docs/contact.md): shape 'sphere:R', 'capsule:R,L' (m) or "
+          "'plane', at position (3,) m with rotation (3, 3) (None: identity; a plane's outward normal and a capsule's "
+          "axis are its z). contact_distance: the barrier's activation distance, m (0: 1 % of the mean boundary "
+          "edge). Returns a hooke.Tool. Simulators and solves made after this call see the tool.")
+      .def(
           "apply_load",
           [](ProblemData& p, const std::string& kind, const py::object& traction, const py::object& strain) {
             if (traction.is_none() == strain.is_none())

@@ -8,6 +8,7 @@
 #include <hooke/mesh/reorder.hpp>
 #include <hooke/model/load_case.hpp>
 #include <hooke/solve/simulation.hpp>
+#include <hooke/solve/tool_press.hpp>
 #include <limits>
 #include <numeric>
 #include <string>
@@ -88,18 +89,11 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
   s.stable_time_step = sim.stable_time_step();
   // Before a step the tool moves; nodes it has passed (it outran their gap) are put back outside it, so the step
   // starts from an admissible state.
-  auto move_tool = [&](double t) {
-    o.tool->set_pose(o.tool_path.at(t));
-    VecX x = sim.positions();
-    const int pushed = contact->push_out(x, 0.5 * contact->activation());
-    if (pushed == 0) return;
-    s.pushed_nodes += pushed;
-    sim.set_state(x, sim.velocities());
-  };
+  auto place_tool = [&](double t) { s.pushed_nodes += solve::move_tool(sim, *contact, *o.tool, o.tool_path.at(t)); };
   if (contact) {
     s.contact_distance = contact->activation();
     s.smallest_gap = std::numeric_limits<double>::infinity();
-    move_tool(0.0);
+    place_tool(0.0);
   }
   auto emit = [&](int k) {
     if (!std::isfinite(sim.potential_energy()))
@@ -122,7 +116,7 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
           ramp * (probe.drive_position ? o.probe_offset : o.probe_force);
       sim.set_probe(probe);
     }
-    if (contact) move_tool(k * o.dynamics.dt);
+    if (contact) place_tool(k * o.dynamics.dt);
     const auto t0 = std::chrono::steady_clock::now();
     const StepReport r = sim.step(o.dynamics.dt);
     s.step_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());

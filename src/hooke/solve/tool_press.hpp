@@ -4,6 +4,7 @@
 /// static reference a pressing instrument's dynamics settles on.
 #include <hooke/contact/contact_block.hpp>
 #include <hooke/model/problem.hpp>
+#include <hooke/solve/simulator.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
 #include <vector>
 
@@ -26,5 +27,11 @@ struct ToolPressStep {
 std::vector<ToolPressStep> press_quasi_statically(const model::Problem& problem, const contact::ContactBlock& block,
                                                   contact::RigidTool& tool, const std::vector<contact::Pose>& poses,
                                                   const StaticOptions& options = {});
+
+/// Moves `tool` to `pose` between two time steps of `sim` (whose model holds `block`, whose tool is `tool`): nodes the
+/// tool has passed (it outran their gap) are put back outside it at half the activation distance, their velocities
+/// kept, so that the next step starts from an admissible state. Returns how many nodes moved.
+/// @throws InvalidArgument when block's tool is not `tool` or the pose is not finite or not a rotation
+int move_tool(Simulator& sim, const contact::ContactBlock& block, contact::RigidTool& tool, const contact::Pose& pose);
 
 }  // namespace hooke::solve

@@ -1,0 +1,15 @@
+#pragma once
+// What a Python hooke.Tool holds: the rigid tool (its pose is set from Python) and the contact block against it,
+// which Problem.add_tool also put into the problem's model (docs/contact.md).
+#include <hooke/contact/contact_block.hpp>
+#include <memory>
+
+namespace hooke::python {
+
+struct PyTool {
+  std::shared_ptr<contact::RigidTool> tool;
+  std::shared_ptr<const contact::ContactBlock> block;
+  int nodes = 0;  ///< the body's node count (positions passed in have this many rows)
+};
+
+}  // namespace hooke::python
