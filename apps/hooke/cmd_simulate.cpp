@@ -26,7 +26,8 @@ struct SimulateCli {
   solve::SimulationOptions run;
   bool free_body = false, no_reorder = false;
   std::vector<double> probe_offset, probe_force;
-  std::string tool, tool_path;  ///< --tool sphere:R|capsule:R,L|plane, --tool-path FILE (m, s)
+  std::string tool, tool_path;         ///< --tool sphere:R|capsule:R,L|plane, --tool-path FILE (m, s)
+  std::vector<std::string> obstacles;  ///< --obstacle plane:X,Y,Z[,NX,NY,NZ] (m)
 };
 
 VecX as_vector(const std::vector<double>& v) {
@@ -55,6 +56,10 @@ void print_summary(const SimulateCli& o, const calibrate::CalibratedModel& model
         o.run.tool->description().c_str(), last[1], last[2], last[3], largest, s.smallest_gap, s.contact_distance,
         s.pushed_nodes);
   }
+  for (std::size_t k = 0; k < s.obstacle_force.size(); ++k)
+    std::printf("  obstacle  %s: force on it %.6g, %.6g, %.6g N at the end; smallest gap %.3g m\n",
+                o.obstacles[k].c_str(), s.obstacle_force[k][0], s.obstacle_force[k][1], s.obstacle_force[k][2],
+                s.obstacle_gap.empty() ? 0.0 : s.obstacle_gap[k]);
   if (s.beyond_stable_dt > 0)
     std::printf("  warning   %d steps beyond the explicit stability limit %.4g s\n", s.beyond_stable_dt,
                 s.stable_time_step);
@@ -74,6 +79,7 @@ int run_simulate(SimulateCli o) {
     o.run.tool = std::make_shared<contact::RigidTool>(contact::parse_tool(o.tool));
     o.run.tool_path = contact::read_tool_path(o.tool_path);
   }
+  for (const std::string& text : o.obstacles) o.run.obstacles.push_back(contact::parse_obstacle(text));
   io::SeriesWriter series(o.out_dir, model.mesh);  // frames appear only when the whole run succeeded
   const int d = model.mesh.dim();
   const solve::SimulationSummary s = solve::simulate(model, o.run, [&](int, double t, const VecX& u, const VecX& v) {
@@ -122,6 +128,10 @@ Action add_simulate_command(CLI::App& app) {
   cmd->add_option("--tool-path", o->tool_path,
                   "The tool's poses over time: CSV with columns t,x,y,z (s, m) and optionally qw,qx,qy,qz; "
                   "writes DIR/tool_force.csv (t,fx,fy,fz: the force the body exerts on the tool, N)");
+  cmd->add_option("--obstacle", o->obstacles,
+                  "A static frictionless obstacle the body may rest on: plane:X,Y,Z (a floor through that point, m) or "
+                  "plane:X,Y,Z,NX,NY,NZ (with that outward normal); repeatable. With --free and --gravity a body "
+                  "rests on it instead of being clamped");
   cmd->add_option("--contact-distance", o->run.contact_distance,
                   "The contact barrier's activation distance, m (0: 1 % of the mean boundary edge)")
       ->check(CLI::NonNegativeNumber)

@@ -90,6 +90,20 @@ list(GET last 3 fz)
 if(NOT count EQUAL 41 OR NOT fz GREATER 0.01)
   message(FATAL_ERROR "tool_force.csv: ${count} lines, last fz ${fz} N")
 endif()
+# The free cylinder under gravity on a floor 0.5 mm below it: it lands and the summary reports the floor's load; a
+# floor through the body is refused.
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --integrator implicit-euler
+                        --dt 0.002 --steps 50 --damping-mass 20 --free --gravity --obstacle plane:0,0,-0.0005
+                        -o ${OUT}/sim_floor RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "obstacle  plane:0,0,-0.0005: force on it [-0-9.e]+, [-0-9.e]+, -[0-9.e]+ N")
+  message(FATAL_ERROR "hooke simulate --obstacle failed: ${rc}")
+endif()
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --steps 2 --free
+                        --obstacle plane:0,0,0.01 -o ${OUT}/sim_bad_floor RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "starts inside the obstacle")
+  message(FATAL_ERROR "a floor through the body must fail with exit code 2 (got ${rc}: ${err})")
+endif()
 file(WRITE ${OUT}/bad_path.csv "time,x,y,z\n0,0,0,0.03\n")
 execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --steps 2
                         --tool sphere:0.005 --tool-path ${OUT}/bad_path.csv -o ${OUT}/sim_bad_tool

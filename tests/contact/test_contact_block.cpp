@@ -65,6 +65,13 @@ TEST(RigidTool, ParsesAndRefusesDescriptions) {
   EXPECT_EQ(parse_tool("plane").shape(), ToolShape::kHalfSpace);
   for (const char* bad : {"sphere", "sphere:-1", "sphere:x", "cube:3", "capsule:2", "capsule:1,-2"})
     EXPECT_THROW(parse_tool(bad), InvalidArgument) << bad;
+  const RigidTool floor = parse_obstacle("plane:0,0,-0.01");
+  EXPECT_NEAR(floor.distance(Vec3(0.3, 0.2, 0.0)).distance, 0.01, 1e-15);
+  const RigidTool wall = parse_obstacle("plane:1,0,0,-2,0,0");  // outward normal -x
+  EXPECT_NEAR(wall.distance(Vec3(0.5, 7.0, 3.0)).distance, 0.5, 1e-15);
+  EXPECT_LT((rotation_to(Vec3(0.0, 3.0, 4.0)).col(2) - Vec3(0.0, 0.6, 0.8)).norm(), 1e-15);
+  for (const char* bad : {"plane", "plane:1,2", "plane:0,0,0,0,0,0", "floor:0,0,0", "plane:0,0,x"})
+    EXPECT_THROW(parse_obstacle(bad), InvalidArgument) << bad;
   RigidTool tool(ToolShape::kSphere, 0.01);
   EXPECT_THROW(tool.set_pose({Vec3(NAN, 0.0, 0.0), Mat3::Identity()}), InvalidArgument);
   EXPECT_THROW(tool.set_pose({Vec3::Zero(), 2.0 * Mat3::Identity()}), InvalidArgument);

@@ -5,6 +5,7 @@
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/mesh/generators.hpp>
 
+#include <cmath>
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/calibrate/model_file.hpp>
 #include <hooke/contact/contact_block.hpp>
@@ -211,6 +212,35 @@ TEST(Simulation, ASpherePressedIntoTheTopSettlesOnTheStaticForce) {
     std::cout << "[press] " << integrator_name(integrator) << ": " << s.not_converged
               << " of 300 steps above tolerance\n";
   }
+}
+
+// A free cube under gravity dropped 0.5 mm onto a floor comes to rest on it: no node below the floor at any step, and
+// at rest the floor carries the cube's weight (sum of the lumped masses times g) to 1 %.
+TEST(Simulation, AFreeBodyComesToRestOnAFloorAndTheFloorCarriesItsWeight) {
+  calibrate::ModelOptions mo;
+  mo.method = "any-nu-tet";
+  const calibrate::CalibratedModel cube =
+      calibrate::calibrate_model(mesh::tet_box(0.02, 0.02, 0.02, 3, 3, 3), {material::Law::kLinear, 14630.0, 0.45}, mo);
+  SimulationOptions o;
+  o.simulator.integrator = Integrator::kImplicitEuler;
+  o.dynamics.dt = 2e-3;
+  o.dynamics.gravity = true;
+  o.dynamics.damping_mass = 20.0;
+  o.clamp_bottom = false;
+  o.steps = 400;
+  o.every = 400;
+  o.obstacles.push_back(contact::parse_obstacle("plane:0,0,-0.0005"));
+  const SimulationSummary s = simulate(cube, o, [](int, double, const VecX&, const VecX&) {});
+  ASSERT_EQ(s.obstacle_force.size(), 1u);
+  const double weight = cube.masses.sum() / 3.0 * 9.81;
+  EXPECT_GT(s.obstacle_gap[0], 0.0);
+  std::cout << "[floor] " << -s.obstacle_force[0][2] << " N on the floor, weight " << weight << " N, gap "
+            << s.obstacle_gap[0] << " m\n";
+  EXPECT_NEAR(-s.obstacle_force[0][2], weight, 0.01 * weight);
+  EXPECT_LT(std::hypot(s.obstacle_force[0][0], s.obstacle_force[0][1]), 1e-6 * weight);
+  // starting inside an obstacle is refused
+  o.obstacles = {contact::parse_obstacle("plane:0,0,0.01")};
+  EXPECT_THROW(simulate(cube, o, [](int, double, const VecX&, const VecX&) {}), InvalidArgument);
 }
 
 TEST(Simulation, RefusesAToolWithoutAPath) {

@@ -5,6 +5,7 @@
 #include <hooke/core/error.hpp>
 #include <hooke/core/settings.hpp>
 #include <string>
+#include <vector>
 
 namespace hooke::contact {
 
@@ -92,6 +93,42 @@ RigidTool parse_tool(std::string_view text, double metres_per_unit) {
                        metres_per_unit * settings::parse_number(where, sizes.substr(comma + 1)));
   }
   throw InvalidArgument("unknown " + where + forms);
+}
+
+Mat3 rotation_to(const Vec3& normal) {
+  if (!normal.allFinite() || !(normal.norm() > 0.0)) throw InvalidArgument("a direction must be finite and non-zero");
+  const Vec3 z = normal.normalized();
+  const Vec3 helper = std::abs(z.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  const Vec3 x = helper.cross(z).normalized();
+  Mat3 r;
+  r.col(0) = x;
+  r.col(1) = z.cross(x);
+  r.col(2) = z;
+  return r;
+}
+
+RigidTool parse_obstacle(std::string_view text) {
+  const std::string where = "obstacle '" + std::string(text) + "'";
+  if (text.substr(0, 6) != "plane:")
+    throw InvalidArgument("unknown " + where + " (use plane:X,Y,Z or plane:X,Y,Z,NX,NY,NZ, m)");
+  std::vector<double> v;
+  std::string_view rest = text.substr(6);
+  while (true) {
+    const std::size_t comma = rest.find(',');
+    v.push_back(settings::parse_number(where, rest.substr(0, comma)));
+    if (comma == std::string_view::npos) break;
+    rest = rest.substr(comma + 1);
+  }
+  if (v.size() != 3 && v.size() != 6)
+    throw InvalidArgument(where + " needs 3 or 6 numbers (plane:X,Y,Z or plane:X,Y,Z,NX,NY,NZ, m)");
+  RigidTool plane(ToolShape::kHalfSpace);
+  const Vec3 normal = v.size() == 6 ? Vec3(v[3], v[4], v[5]) : Vec3::UnitZ();
+  try {
+    plane.set_pose({Vec3(v[0], v[1], v[2]), rotation_to(normal)});
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(where + ": " + e.what());
+  }
+  return plane;
 }
 
 }  // namespace hooke::contact

@@ -65,4 +65,13 @@ class RigidTool {
 /// @throws InvalidArgument naming the text and the forms accepted
 RigidTool parse_tool(std::string_view text, double metres_per_unit = 1.0);
 
+/// A rotation whose local z axis is `normal` (any length > 0): how a plane's outward normal or a capsule's axis is
+/// given. @throws InvalidArgument for a zero or non-finite vector
+Mat3 rotation_to(const Vec3& normal);
+
+/// Parses an obstacle: "plane:X,Y,Z" (a horizontal floor through that point, outward normal +z) or
+/// "plane:X,Y,Z,NX,NY,NZ" (through the point, with that outward normal); coordinates in m.
+/// @throws InvalidArgument naming the text and the forms accepted
+RigidTool parse_obstacle(std::string_view text);
+
 }  // namespace hooke::contact

@@ -65,6 +65,18 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
     built.model->add(std::move(block));
   }
 
+  std::vector<const contact::ContactBlock*> floors;  // the obstacles' contact blocks
+  for (const contact::RigidTool& obstacle : o.obstacles) {
+    auto block = contact::boundary_contact(cm.mesh, cm.material.youngs_modulus,
+                                           std::make_shared<contact::RigidTool>(obstacle), o.contact_distance);
+    if (!(block->smallest_distance(rest) > 0.0))
+      throw InvalidArgument("the body starts inside the obstacle " + obstacle.description() + " at " +
+                            std::to_string(obstacle.pose().position.x()) + ", " +
+                            std::to_string(obstacle.pose().position.y()) + ", " +
+                            std::to_string(obstacle.pose().position.z()) + " m");
+    floors.push_back(block.get());
+    built.model->add(std::move(block));
+  }
   model::Problem problem = model::make_problem(built.model);
   if (o.clamp_bottom && !cm.surface)
     model::fix_nodes(problem,
@@ -97,7 +109,9 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
   }
   auto emit = [&](int k) {
     if (!std::isfinite(sim.potential_energy()))
-      fail_step(contact ? "inverted an element or entered the tool" : "inverted an element", k, o, s.stable_time_step);
+      fail_step(
+          contact || !floors.empty() ? "inverted an element or entered a tool or obstacle" : "inverted an element", k,
+          o, s.stable_time_step);
     for (int i = 0; i < n; ++i) {
       const int j = old_to_new[static_cast<size_t>(i)];
       out_u.segment(d * i, d) = sim.positions().segment(d * j, d) - rest.segment(d * j, d);
@@ -130,6 +144,9 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
     s.not_converged += r.converged ? 0 : 1;
     s.iterations += r.iterations;
     s.beyond_stable_dt += r.beyond_stable_dt ? 1 : 0;
+    s.obstacle_gap.resize(floors.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t f = 0; f < floors.size(); ++f)
+      s.obstacle_gap[f] = std::min(s.obstacle_gap[f], floors[f]->smallest_distance(sim.positions()));
     if (contact) {
       const Vec3 f = contact->tool_force(sim.positions());
       s.tool_force.push_back({sim.time(), f.x(), f.y(), f.z()});
@@ -137,6 +154,10 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
     }
     if (r.probe_force.size() > 0) s.max_probe_force = std::max(s.max_probe_force, r.probe_force.norm());
     if (k % every == 0 || k == o.steps) emit(k);
+  }
+  for (const contact::ContactBlock* floor : floors) {
+    const Vec3 f = floor->tool_force(sim.positions());
+    s.obstacle_force.push_back({f.x(), f.y(), f.z()});
   }
   s.energy_end = sim.kinetic_energy() + sim.potential_energy();
   s.kinetic_end = sim.kinetic_energy();

@@ -32,6 +32,9 @@ struct SimulationOptions {
   std::shared_ptr<contact::RigidTool> tool;
   contact::ToolPath tool_path;
   double contact_distance = 0.0;
+  /// Static rigid obstacles the body may rest on (half-spaces: contact::parse_obstacle), each with its own contact
+  /// block on the boundary, frictionless; the body must start outside them.
+  std::vector<contact::RigidTool> obstacles;
 };
 
 struct SimulationSummary {
@@ -50,6 +53,9 @@ struct SimulationSummary {
   double smallest_gap = 0.0;      ///< with a tool: the smallest node-to-tool distance after any step, m (> 0)
   int pushed_nodes = 0;           ///< nodes moved out of the tool's way before a step (the tool outran their gap)
   double contact_distance = 0.0;  ///< the activation distance used, m
+  /// per obstacle: the force the body exerts on it at the end, N (x y z), and the smallest gap over the run, m
+  std::vector<std::array<double, 3>> obstacle_force;
+  std::vector<double> obstacle_gap;
 };
 
 /// Receives a frame: step number, time (s), displacement and velocity (flat, in the model's node order).
