@@ -47,6 +47,7 @@ TEST(RigidTool, DistanceDerivativesMatchFiniteDifferences) {
       const MatX fd2 = test::fd_jacobian(normal, VecX(p), 1e-7);
       EXPECT_LT((fd2 - s.curvature).norm(), 1e-4 * (1.0 + s.curvature.norm())) << tool.description();
       EXPECT_NEAR(tool.distance(s.closest).distance, 0.0, 1e-12) << tool.description();
+      EXPECT_EQ(tool.signed_distance(p), s.distance) << tool.description();
       EXPECT_NEAR((p - s.closest).norm(), std::abs(s.distance), 1e-12) << tool.description();
     }
   }

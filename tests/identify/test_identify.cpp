@@ -124,9 +124,7 @@ std::vector<identify::ReferenceCase> pressed_cases_of(const mesh::Mesh& mesh, co
     const solve::StaticResult r = identify::reference_equilibrium(model, ref, {});  // ramped from rest
     EXPECT_EQ(r.report.status, solve::SolveStatus::kConverged) << r.report.message;
     ref.positions = r.positions;
-    const VecX g = model->gradient(r.positions);
-    for (std::size_t k = 0; k < dofs; ++k)
-      if (ref.prescribed_dofs[k]) ref.external_force(static_cast<Eigen::Index>(k)) = g(static_cast<Eigen::Index>(k));
+    ref.external_force = identify::prescribed_part(ref, model->gradient(r.positions));
     out.push_back(ref);
   }
   return out;

@@ -30,15 +30,21 @@ ContactBlock::ContactBlock(std::vector<int> nodes, VecX stiffness, double activa
                             " has stiffness " + std::to_string(m_stiffness(i)) + " (must be > 0 N/m)");
 }
 
-double ContactBlock::energy(const Eigen::Ref<const VecX>& x) const {
-  double e = 0.0;
-  for (std::size_t i = 0; i < m_nodes.size(); ++i) {
-    const SurfaceDistance s = m_tool->distance(x.segment<3>(3 * m_nodes[i]));
-    if (s.distance >= m_activation) continue;
-    const double b = barrier(s.distance, m_activation).value;
-    if (!std::isfinite(b)) return std::numeric_limits<double>::infinity();
-    e += m_stiffness(static_cast<Eigen::Index>(i)) * b;
+template <class F>
+void ContactBlock::for_each_touching(const Eigen::Ref<const VecX>& x, F&& f) const {
+  for (std::size_t k = 0; k < m_nodes.size(); ++k) {
+    const Vec3 p = x.segment<3>(3 * m_nodes[k]);
+    if (m_tool->signed_distance(p) >= m_activation) continue;  // most nodes: no derivatives needed
+    const SurfaceDistance s = m_tool->distance(p);
+    f(k, s, barrier(s.distance, m_activation));
   }
+}
+
+double ContactBlock::energy(const Eigen::Ref<const VecX>& x) const {
+  double e = 0.0;  // +infinity once a node is at or inside the tool
+  for_each_touching(x, [&](std::size_t k, const SurfaceDistance&, const Barrier& b) {
+    e += m_stiffness(static_cast<Eigen::Index>(k)) * b.value;
+  });
   return e;
 }
 
@@ -48,14 +54,11 @@ void ContactBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX
 
 double ContactBlock::energy_and_add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
   double e = 0.0;
-  for (std::size_t i = 0; i < m_nodes.size(); ++i) {
-    const SurfaceDistance s = m_tool->distance(x.segment<3>(3 * m_nodes[i]));
-    if (s.distance >= m_activation) continue;
-    const Barrier b = barrier(s.distance, m_activation);
-    const double k = m_stiffness(static_cast<Eigen::Index>(i));
-    e += k * b.value;
-    if (std::isfinite(b.value)) gradient.segment<3>(3 * m_nodes[i]) += k * b.slope * s.normal;
-  }
+  for_each_touching(x, [&](std::size_t k, const SurfaceDistance& s, const Barrier& b) {
+    const double kappa = m_stiffness(static_cast<Eigen::Index>(k));
+    e += kappa * b.value;
+    if (std::isfinite(b.value)) gradient.segment<3>(3 * m_nodes[k]) += kappa * b.slope * s.normal;
+  });
   return e;
 }
 
@@ -67,46 +70,39 @@ RowMatXi ContactBlock::element_nodes() const {
 
 void ContactBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter,
                                       double* values, bool project_psd) const {
-  for (std::size_t i = 0; i < m_nodes.size(); ++i) {
-    const SurfaceDistance s = m_tool->distance(x.segment<3>(3 * m_nodes[i]));
-    if (s.distance >= m_activation || !(s.distance > 0.0)) continue;
-    const Barrier b = barrier(s.distance, m_activation);
-    const double k = m_stiffness(static_cast<Eigen::Index>(i));
+  for_each_touching(x, [&](std::size_t k, const SurfaceDistance& s, const Barrier& b) {
+    if (!(s.distance > 0.0)) return;
+    const double kappa = m_stiffness(static_cast<Eigen::Index>(k));
     // kappa (b'' n n^T + b' C): b'' > 0 and b' <= 0 on (0, dhat), C positive semi-definite for convex tools. The
-    // projection keeps the first part and the second where positive: the curvature term is negative semi-definite.
-    Mat3 h = k * b.curvature * s.normal * s.normal.transpose();
-    if (!project_psd) h += k * b.slope * s.curvature;
-    scatter.add<3, 1>(static_cast<int>(i), h, values);
-  }
+    // projection keeps the first part and drops the second, which is negative semi-definite.
+    Mat3 h = kappa * b.curvature * s.normal * s.normal.transpose();
+    if (!project_psd) h += kappa * b.slope * s.curvature;
+    scatter.add<3, 1>(static_cast<int>(k), h, values);
+  });
 }
 
 Vec3 ContactBlock::tool_force(const Eigen::Ref<const VecX>& x) const {
   Vec3 f = Vec3::Zero();
-  for (std::size_t i = 0; i < m_nodes.size(); ++i) {
-    const SurfaceDistance s = m_tool->distance(x.segment<3>(3 * m_nodes[i]));
-    if (s.distance < m_activation)
-      f += m_stiffness(static_cast<Eigen::Index>(i)) * barrier(s.distance, m_activation).slope * s.normal;
-  }
+  for_each_touching(x, [&](std::size_t k, const SurfaceDistance& s, const Barrier& b) {
+    f += m_stiffness(static_cast<Eigen::Index>(k)) * b.slope * s.normal;
+  });
   return f;
 }
 
 Vec3 ContactBlock::tool_torque(const Eigen::Ref<const VecX>& x) const {
   Vec3 t = Vec3::Zero();
-  for (std::size_t i = 0; i < m_nodes.size(); ++i) {
-    const SurfaceDistance s = m_tool->distance(x.segment<3>(3 * m_nodes[i]));
-    if (s.distance < m_activation)
-      t += (s.closest - m_tool->pose().position)
-               .cross(Vec3(m_stiffness(static_cast<Eigen::Index>(i)) * barrier(s.distance, m_activation).slope *
-                           s.normal));
-  }
+  for_each_touching(x, [&](std::size_t k, const SurfaceDistance& s, const Barrier& b) {
+    const Vec3 f = m_stiffness(static_cast<Eigen::Index>(k)) * b.slope * s.normal;
+    t += (s.closest - m_tool->pose().position).cross(f);
+  });
   return t;
 }
 
 int ContactBlock::push_out(Eigen::Ref<VecX> x, double distance) const {
   int moved = 0;
   for (int node : m_nodes) {
+    if (m_tool->signed_distance(x.segment<3>(3 * node)) >= distance) continue;
     const SurfaceDistance s = m_tool->distance(x.segment<3>(3 * node));
-    if (s.distance >= distance) continue;
     x.segment<3>(3 * node) = s.closest + distance * s.normal;
     ++moved;
   }
@@ -115,13 +111,13 @@ int ContactBlock::push_out(Eigen::Ref<VecX> x, double distance) const {
 
 int ContactBlock::active_count(const Eigen::Ref<const VecX>& x) const {
   int n = 0;
-  for (int node : m_nodes) n += m_tool->distance(x.segment<3>(3 * node)).distance < m_activation;
+  for_each_touching(x, [&](std::size_t, const SurfaceDistance&, const Barrier&) { ++n; });
   return n;
 }
 
 double ContactBlock::smallest_distance(const Eigen::Ref<const VecX>& x) const {
   double d = std::numeric_limits<double>::infinity();
-  for (int node : m_nodes) d = std::min(d, m_tool->distance(x.segment<3>(3 * node)).distance);
+  for (int node : m_nodes) d = std::min(d, m_tool->signed_distance(x.segment<3>(3 * node)));
   return d;
 }
 

@@ -56,6 +56,10 @@ class ContactBlock final : public model::TermBlock {
   const RigidTool& tool() const { return *m_tool; }
 
  private:
+  /// Calls f(k, distance, barrier) for every node m_nodes[k] within the activation distance at x.
+  template <class F>
+  void for_each_touching(const Eigen::Ref<const VecX>& x, F&& f) const;
+
   std::vector<int> m_nodes;
   VecX m_stiffness;
   double m_activation;

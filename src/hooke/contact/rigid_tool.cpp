@@ -66,6 +66,14 @@ SurfaceDistance RigidTool::distance(const Vec3& point) const {
   return out;
 }
 
+double RigidTool::signed_distance(const Vec3& point) const {
+  const Vec3 axis = m_pose.rotation.col(2);
+  if (m_shape == ToolShape::kHalfSpace) return axis.dot(point - m_pose.position);
+  const Vec3 start = m_pose.position - 0.5 * m_length * axis;
+  const double t = std::clamp((point - start).dot(axis), 0.0, m_length);
+  return (point - (start + t * axis)).norm() - m_radius;
+}
+
 std::string RigidTool::description() const {
   char text[96];
   if (m_shape == ToolShape::kSphere)

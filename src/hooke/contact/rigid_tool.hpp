@@ -51,6 +51,8 @@ class RigidTool {
   /// The signed distance of `point` (m) to the surface with its derivatives. Where the derivatives are not defined
   /// (the point on a sphere's centre or a capsule's axis) the normal is the pose's local z and the curvature zero.
   SurfaceDistance distance(const Vec3& point) const;
+  /// distance(point).distance alone, m (no derivatives: what a contact block tests every node with).
+  double signed_distance(const Vec3& point) const;
 
   /// "sphere:R", "capsule:R,L" or "plane" (radius, length in m).
   std::string description() const;

@@ -167,9 +167,7 @@ identify::ReferenceCase displaced_case(const std::shared_ptr<model::Model>& fem,
     throw SolverFailure("reference case '" + c.name + "' (" + std::string(material::law_name(law)) +
                         " FEM, displacement control): " + r.report.message);
   c.positions = r.positions;
-  const VecX g = fem->gradient(r.positions);
-  for (std::size_t k = 0; k < c.prescribed_dofs.size(); ++k)
-    if (c.prescribed_dofs[k]) c.external_force(static_cast<Eigen::Index>(k)) = g(static_cast<Eigen::Index>(k));
+  c.external_force = identify::prescribed_part(c, fem->gradient(r.positions));
   return c;
 }
 

@@ -16,16 +16,6 @@ double relative_distance(const VecX& x, const VecX& reference, const VecX& rest)
   return (x - reference).norm() / std::max((reference - rest).norm(), std::numeric_limits<double>::min());
 }
 
-// Per DOF, g - f_ref on the case's prescribed DOFs (g = dE/dx, the force the instrument applies), zero elsewhere.
-VecX reaction_miss(const ReferenceCase& c, const VecX& g) {
-  VecX e = VecX::Zero(g.size());
-  for (std::size_t k = 0; k < c.prescribed_dofs.size(); ++k)
-    if (c.prescribed_dofs[k])
-      e(static_cast<Eigen::Index>(k)) =
-          g(static_cast<Eigen::Index>(k)) - c.external_force(static_cast<Eigen::Index>(k));
-  return e;
-}
-
 // The total over the nodes of a flat per-DOF vector (dim entries).
 VecX node_sum(const VecX& v, int dim) {
   VecX sum = VecX::Zero(dim);
@@ -36,12 +26,9 @@ VecX node_sum(const VecX& v, int dim) {
 
 double reaction_error(const ReferenceCase& reference, const VecX& gradient, int dim) {
   if (!has_prescribed(reference)) return -1.0;
-  VecX measured = VecX::Zero(gradient.size());
-  for (std::size_t k = 0; k < reference.prescribed_dofs.size(); ++k)
-    if (reference.prescribed_dofs[k])
-      measured(static_cast<Eigen::Index>(k)) = reference.external_force(static_cast<Eigen::Index>(k));
-  const VecX miss = node_sum(reaction_miss(reference, gradient), dim);
-  return miss.norm() / std::max(node_sum(measured, dim).norm(), std::numeric_limits<double>::min());
+  const VecX measured = node_sum(prescribed_part(reference, reference.external_force), dim);
+  const VecX miss = node_sum(prescribed_part(reference, gradient), dim) - measured;
+  return miss.norm() / std::max(measured.norm(), std::numeric_limits<double>::min());
 }
 
 solve::StaticResult reference_equilibrium(std::shared_ptr<const model::Model> model, const ReferenceCase& reference,
@@ -98,10 +85,9 @@ PositionsObjective::PositionsObjective(const mesh::Mesh& mesh, const ParameterLa
   for (std::size_t c = 0; c < m_cases.size(); ++c) {
     if (!has_prescribed(m_cases[c])) continue;
     const ReferenceCase& ref = m_cases[c];
-    VecX held = VecX::Zero(ref.external_force.size());
-    for (std::size_t k = 0; k < ref.prescribed_dofs.size(); ++k)
-      if (ref.prescribed_dofs[k]) held(static_cast<Eigen::Index>(k)) = ref.external_force(static_cast<Eigen::Index>(k));
-    const double measured = node_sum(held, static_cast<int>(rest.size() / mesh.node_count())).squaredNorm();
+    const double measured =
+        node_sum(prescribed_part(ref, ref.external_force), static_cast<int>(rest.size() / mesh.node_count()))
+            .squaredNorm();
     if (!(measured > 0.0))
       throw InvalidArgument("reference case '" + m_cases[c].name +
                             "' prescribes positions but measures no force where it does");
@@ -133,7 +119,8 @@ double PositionsObjective::value(const VecX& theta, VecX* gradient) {
     VecX force_miss;  // S^T S (R(theta) - R_ref): the total force's miss on every prescribed DOF of its axis
     if (prescribed) {
       const int d = model->dim();
-      const VecX total = node_sum(reaction_miss(ref, model->gradient(result.positions)), d);
+      const VecX total =
+          node_sum(prescribed_part(ref, VecX(model->gradient(result.positions) - ref.external_force)), d);
       force_sum += m_force_weights[c] * total.squaredNorm();
       force_miss = VecX::Zero(model->dof_count());
       for (std::size_t k = 0; k < ref.prescribed_dofs.size(); ++k)

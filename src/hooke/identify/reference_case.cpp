@@ -23,6 +23,13 @@ bool has_prescribed(const ReferenceCase& reference) {
   return false;
 }
 
+VecX prescribed_part(const ReferenceCase& reference, const VecX& values) {
+  VecX out = VecX::Zero(values.size());
+  for (std::size_t k = 0; k < reference.prescribed_dofs.size(); ++k)
+    if (reference.prescribed_dofs[k]) out(static_cast<Eigen::Index>(k)) = values(static_cast<Eigen::Index>(k));
+  return out;
+}
+
 void validate_reference(const ReferenceCase& reference, Eigen::Index dof_count) {
   const std::string what = "reference case '" + reference.name + "'";
   if (reference.positions.size() != dof_count || reference.external_force.size() != dof_count ||

@@ -25,6 +25,9 @@ std::vector<char> held_dofs(const ReferenceCase& reference);
 /// Whether the case prescribes any DOF (displacement control).
 bool has_prescribed(const ReferenceCase& reference);
 
+/// `values` (flat, per DOF) on the case's prescribed DOFs and zero elsewhere (the same size as `values`).
+VecX prescribed_part(const ReferenceCase& reference, const VecX& values);
+
 /// The cases that are fitted (not held out), in their order: pointers into `cases`.
 std::vector<const ReferenceCase*> training_cases(const std::vector<ReferenceCase>& cases);
 

@@ -40,14 +40,11 @@ ScaleFit fit_scale(const mesh::Mesh& mesh, const calibrate::SpringModel& start, 
       ++out.static_solves;
       if (r.report.status != solve::SolveStatus::kConverged)
         throw SolverFailure("scale fit, case '" + c->name + "': no equilibrium (" + r.report.message + ")");
-      const VecX g = model->gradient(r.positions);
-      for (std::size_t k = 0; k < c->prescribed_dofs.size(); ++k)
-        if (c->prescribed_dofs[k]) {
-          const auto i = static_cast<Eigen::Index>(k);
-          rr += g(i) * g(i);
-          r_ref += g(i) * c->external_force(i);
-          ref_ref += c->external_force(i) * c->external_force(i);
-        }
+      const VecX g = prescribed_part(*c, model->gradient(r.positions));
+      const VecX f = prescribed_part(*c, c->external_force);
+      rr += g.squaredNorm();
+      r_ref += g.dot(f);
+      ref_ref += f.squaredNorm();
     }
     if (!(r_ref > 0.0) || !(ref_ref > 0.0))
       throw SolverFailure(

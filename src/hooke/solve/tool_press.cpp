@@ -40,6 +40,7 @@ std::vector<ToolPressStep> press_quasi_statically(const model::Problem& problem,
 int move_tool(Simulator& sim, const contact::ContactBlock& block, contact::RigidTool& tool, const contact::Pose& pose) {
   if (&block.tool() != &tool) throw InvalidArgument("move_tool: the contact block does not hold this tool");
   tool.set_pose(pose);
+  if (block.smallest_distance(sim.positions()) >= 0.5 * block.activation()) return 0;  // no copy of the state
   VecX x = sim.positions();
   const int pushed = block.push_out(x, 0.5 * block.activation());
   if (pushed > 0) sim.set_state(x, sim.velocities());
