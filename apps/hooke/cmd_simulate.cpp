@@ -60,6 +60,8 @@ void print_summary(const SimulateCli& o, const calibrate::CalibratedModel& model
     std::printf("  obstacle  %s: force on it %.6g, %.6g, %.6g N at the end; smallest gap %.3g m\n",
                 o.obstacles[k].c_str(), s.obstacle_force[k][0], s.obstacle_force[k][1], s.obstacle_force[k][2],
                 s.obstacle_gap.empty() ? 0.0 : s.obstacle_gap[k]);
+  if (s.creep_velocity > 0.0)
+    std::printf("  friction  coefficient %.3g, creep velocity %.3g m/s\n", o.run.friction, s.creep_velocity);
   if (s.beyond_stable_dt > 0)
     std::printf("  warning   %d steps beyond the explicit stability limit %.4g s\n", s.beyond_stable_dt,
                 s.stable_time_step);
@@ -129,11 +131,21 @@ Action add_simulate_command(CLI::App& app) {
                   "The tool's poses over time: CSV with columns t,x,y,z (s, m) and optionally qw,qx,qy,qz; "
                   "writes DIR/tool_force.csv (t,fx,fy,fz: the force the body exerts on the tool, N)");
   cmd->add_option("--obstacle", o->obstacles,
-                  "A static frictionless obstacle the body may rest on: plane:X,Y,Z (a floor through that point, m) or "
+                  "A static obstacle the body may rest on (with --friction's coefficient): plane:X,Y,Z (a floor "
+                  "through that point, m) or "
                   "plane:X,Y,Z,NX,NY,NZ (with that outward normal); repeatable. With --free and --gravity a body "
                   "rests on it instead of being clamped");
   cmd->add_option("--contact-distance", o->run.contact_distance,
                   "The contact barrier's activation distance, m (0: 1 % of the mean boundary edge)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--friction", o->run.friction,
+                  "Coulomb friction coefficient of the tool's and the obstacles' contacts (0: frictionless)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--creep-velocity", o->run.creep_velocity,
+                  "With friction: the slip velocity below which friction acts as a stiff drag, m/s (a contact below "
+                  "the friction limit creeps slower than this; 0: 1e-3 of the body's bounding-box diagonal per s)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--every", o->run.every, "Write a frame every this many steps (default: about 100 frames)");

@@ -5,14 +5,14 @@ import pytest
 import hooke
 
 
-def pressed_problem():
+def pressed_problem(friction=0.0):
     mesh = hooke.tet_cylinder(0.01, 0.02, 6, 4)
     model = hooke.calibrate(mesh, hooke.Material(14630.0, 0.45), method="any-nu-tet")
     problem = hooke.Problem(model)
     x = mesh.points
     problem.fix_nodes(np.flatnonzero(x[:, 2] < x[:, 2].min() + 1e-9).tolist())
     top = x[:, 2].max()
-    tool = problem.add_tool("sphere:0.005", [0.0, 0.0, top + 0.0055])
+    tool = problem.add_tool("sphere:0.005", [0.0, 0.0, top + 0.0055], friction=friction)
     return problem, tool, top
 
 
@@ -48,3 +48,18 @@ def test_tools_are_refused_when_malformed():
         tool.set_pose([0.0, 0.0, 1.0], 2.0 * np.eye(3))
     with pytest.raises(ValueError, match="position"):
         tool.set_pose([0.0, np.nan, 1.0])
+
+
+def test_friction_drags_the_surface_along_with_a_sliding_tool():
+    """A sphere pressed 2 mm and then slid 1 mm sideways (static poses): with friction the body holds it back harder
+    than without, and its surface nodes follow the tool further."""
+    lateral = {}
+    for mu in (0.0, 0.5):
+        problem, tool, top = pressed_problem(mu)
+        poses = [[0.0, 0.0, top + 0.005 - d] for d in (1e-3, 2e-3)] + [[s, 0.0, top + 0.003] for s in (5e-4, 1e-3)]
+        steps = hooke.press(problem, tool, poses)
+        lateral[mu] = steps[-1]["force"][0]
+        assert steps[-1]["smallest_gap"] > 0.0
+    assert lateral[0.5] < -1.5 * abs(lateral[0.0])  # the body drags on the tool against its motion (+x)
+    with pytest.raises(hooke.InvalidArgument, match="friction"):
+        pressed_problem(-1.0)

@@ -94,15 +94,22 @@ endif()
 # floor through the body is refused.
 execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --integrator implicit-euler
                         --dt 0.002 --steps 50 --damping-mass 20 --free --gravity --obstacle plane:0,0,-0.0005
-                        -o ${OUT}/sim_floor RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+                        --friction 0.5 -o ${OUT}/sim_floor RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}${err}")
-if(NOT rc EQUAL 0 OR NOT out MATCHES "obstacle  plane:0,0,-0.0005: force on it [-0-9.e]+, [-0-9.e]+, -[0-9.e]+ N")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "obstacle  plane:0,0,-0.0005: force on it [-0-9.e]+, [-0-9.e]+, -[0-9.e]+ N"
+   OR NOT out MATCHES "friction  coefficient 0.5, creep velocity")
   message(FATAL_ERROR "hooke simulate --obstacle failed: ${rc}")
 endif()
 execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --steps 2 --free
                         --obstacle plane:0,0,0.01 -o ${OUT}/sim_bad_floor RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 2 OR NOT err MATCHES "starts inside the obstacle")
   message(FATAL_ERROR "a floor through the body must fail with exit code 2 (got ${rc}: ${err})")
+endif()
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --steps 2 --free
+                        --obstacle plane:0,0,-0.001 --friction -1 -o ${OUT}/sim_bad_friction RESULT_VARIABLE rc
+                        ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "friction")
+  message(FATAL_ERROR "a negative friction coefficient must fail with exit code 2 (got ${rc}: ${err})")
 endif()
 file(WRITE ${OUT}/bad_path.csv "time,x,y,z\n0,0,0,0.03\n")
 execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --steps 2

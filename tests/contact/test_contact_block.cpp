@@ -100,6 +100,25 @@ TEST(Barrier, DerivativesMatchFiniteDifferencesAndItVanishesSmoothlyAtTheActivat
   EXPECT_NEAR(-barrier(0.5 * dhat, dhat).slope / dhat, std::log(2.0) + 0.5, 1e-12);
 }
 
+// The block's energy, gradient and Hessian at x (four nodes, the last out of reach) against central differences of
+// step h, its projected Hessian positive semi-definite, and the force on the tool minus the sum of the nodes' forces.
+// Returns the gradient.
+VecX expect_derivatives_match(const ContactBlock& block, const VecX& x, double h) {
+  VecX g = VecX::Zero(x.size());
+  EXPECT_NEAR(block.energy_and_add_gradient(x, g), block.energy(x), 1e-15);
+  const VecX fd = test::fd_gradient([&](const VecX& q) { return block.energy(q); }, x, h);
+  EXPECT_LT((fd - g).norm(), 1e-6 * g.norm());
+  model::Model m(3, x);
+  m.add(std::make_unique<ContactBlock>(block));
+  const MatX hessian = MatX(m.hessian(x));
+  const MatX fdh = test::fd_jacobian([&](const VecX& q) { return m.gradient(q); }, x, 0.1 * h);
+  EXPECT_LT((hessian - fdh).norm(), 1e-5 * hessian.norm());
+  EXPECT_GE(Eigen::SelfAdjointEigenSolver<MatX>(MatX(m.hessian(x, true))).eigenvalues().minCoeff(),
+            -1e-9 * hessian.norm());
+  EXPECT_LT((block.tool_force(x) - Vec3(g.segment<3>(0) + g.segment<3>(3) + g.segment<3>(6))).norm(), 1e-12 * g.norm());
+  return g;
+}
+
 // The block on a few nodes near a sphere: energy, gradient and Hessian against central differences.
 TEST(ContactBlock, GradientAndHessianMatchFiniteDifferences) {
   auto tool = std::make_shared<RigidTool>(ToolShape::kSphere, 0.01);
@@ -109,18 +128,8 @@ TEST(ContactBlock, GradientAndHessianMatchFiniteDifferences) {
   x << 0.0111, 0.0, 0.0, 0.0, 0.0105, 0.001, 0.003, 0.002, 0.0112, 0.02, 0.0, 0.0;  // the last one out of reach
   ContactBlock block({0, 1, 2, 3}, VecX::Constant(4, 50.0), dhat, tool);
   EXPECT_EQ(block.active_count(x), 3);
-  VecX g = VecX::Zero(12);
-  const double e = block.energy_and_add_gradient(x, g);
-  EXPECT_NEAR(e, block.energy(x), 1e-15);
-  const VecX fd = test::fd_gradient([&](const VecX& q) { return block.energy(q); }, x, 1e-8);
-  EXPECT_LT((fd - g).norm(), 1e-6 * g.norm());
-  model::Model m(3, x);
-  m.add(std::make_unique<ContactBlock>(block));
-  const MatX h = MatX(m.hessian(x));
-  const MatX fdh = test::fd_jacobian([&](const VecX& q) { return m.gradient(q); }, x, 1e-9);
-  EXPECT_LT((h - fdh).norm(), 1e-5 * h.norm());
-  // the force on the tool is minus the sum of the forces on the nodes; its torque about the centre is zero for a sphere
-  EXPECT_LT((block.tool_force(x) - Vec3(g.segment<3>(0) + g.segment<3>(3) + g.segment<3>(6))).norm(), 1e-12 * g.norm());
+  const VecX g = expect_derivatives_match(block, x, 1e-8);
+  // its torque about the centre is zero for a sphere
   EXPECT_LT(block.tool_torque(x).norm(), 1e-12 * g.norm() * 0.01);
   // inside the tool: inadmissible
   x(0) = 0.009;
@@ -128,6 +137,57 @@ TEST(ContactBlock, GradientAndHessianMatchFiniteDifferences) {
   EXPECT_THROW(ContactBlock({0}, VecX::Constant(1, -1.0), dhat, tool), InvalidArgument);
   EXPECT_THROW(ContactBlock({0}, VecX::Constant(2, 1.0), dhat, tool), InvalidArgument);
   EXPECT_THROW(ContactBlock({0}, VecX::Constant(1, 1.0), 0.0, tool), InvalidArgument);
+}
+
+// The friction smoothing: f1 = f0', f1' = f1'' against central differences, C1 at eps, f1 rising from 0 to 1.
+TEST(Friction, SmoothingDerivativesMatchFiniteDifferences) {
+  const double eps = 1e-6;
+  for (double y : {0.0, 1e-8, 3e-7, 9e-7, 1.5e-6, 1e-3}) {
+    const double h = 1e-10;
+    const FrictionSmoothing f = friction_smoothing(y, eps);
+    EXPECT_NEAR(f.slope, (friction_smoothing(y + h, eps).value - friction_smoothing(y - h, eps).value) / (2 * h), 1e-6);
+    EXPECT_NEAR(f.curvature, (friction_smoothing(y + h, eps).slope - friction_smoothing(y - h, eps).slope) / (2 * h),
+                1e-4 / eps);
+    EXPECT_GE(f.slope, 0.0);
+    EXPECT_LE(f.slope, 1.0);
+  }
+  EXPECT_EQ(friction_smoothing(0.0, eps).value, 0.0);
+  EXPECT_NEAR(friction_smoothing(eps * (1 - 1e-9), eps).value, friction_smoothing(eps, eps).value, 1e-14);
+  EXPECT_NEAR(friction_smoothing(eps * (1 - 1e-9), eps).slope, 1.0, 1e-8);
+}
+
+// Friction on nodes touching a moving, turning capsule: lagged at one pose, evaluated after the tool moved and the
+// nodes slipped (some below eps, some beyond): gradient and Hessian against central differences, the force on the
+// tool against the nodes' forces, and no slip force beyond mu times the lagged normal force.
+TEST(Friction, GradientAndHessianMatchFiniteDifferencesAndTheForceIsBoundedByMuTimesTheNormalForce) {
+  auto tool = std::make_shared<RigidTool>(ToolShape::kCapsule, 0.01, 0.02);
+  tool->set_pose({Vec3(0.0, 0.0, 0.0), rotation(0.3, Vec3(1.0, 0.0, 0.0))});
+  const double dhat = 2e-3, mu = 0.4, eps = 1e-4;
+  VecX x(12);
+  x << 0.0111, 0.0, 0.0, 0.0, -0.01159, -0.00044, 0.003, 0.0112, 0.002, 0.03, 0.0, 0.0;
+  ContactBlock block({0, 1, 2, 3}, VecX::Constant(4, 50.0), dhat, tool);
+  block.set_friction({mu, eps});
+  block.lag(x);
+  EXPECT_EQ(block.sticking_count(), 3);
+  const ContactBlock copy = block;  // shares the lagged state
+  EXPECT_EQ(copy.sticking_count(), 3);
+  VecX normal = VecX::Zero(12);
+  {
+    ContactBlock frictionless({0, 1, 2, 3}, VecX::Constant(4, 50.0), dhat, tool);
+    frictionless.add_gradient(x, normal);
+  }
+  tool->set_pose({Vec3(1e-5, 2e-5, -1e-5), rotation(0.31, Vec3(1.0, 0.1, 0.0))});
+  x.segment<3>(0) += Vec3(0.0, 3e-5, 1e-5);   // slips beyond eps relative to the tool
+  x.segment<3>(3) += Vec3(1e-5, 0.0, -1e-6);  // about eps
+  x.segment<3>(6) += Vec3(-2e-5, 1e-5, 0.0);
+  const VecX g = expect_derivatives_match(block, x, 1e-9);
+  // the friction force (the total less the barrier's at x) is at most mu times the lagged normal force
+  VecX barrier_only = VecX::Zero(12);
+  ContactBlock({0, 1, 2, 3}, VecX::Constant(4, 50.0), dhat, tool).add_gradient(x, barrier_only);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_LE((g - barrier_only).segment<3>(3 * i).norm(), mu * normal.segment<3>(3 * i).norm() * (1 + 1e-12));
+  EXPECT_THROW(block.set_friction({-0.1, eps}), InvalidArgument);
+  EXPECT_THROW(block.set_friction({0.1, 0.0}), InvalidArgument);
 }
 
 }  // namespace

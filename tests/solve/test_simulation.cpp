@@ -2,6 +2,8 @@
 // stepped by two simulators on two threads at once, and bad options are refused by the library.
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include <hooke/calibrate/surface_model.hpp>
 #include <hooke/mesh/generators.hpp>
 
@@ -241,6 +243,73 @@ TEST(Simulation, AFreeBodyComesToRestOnAFloorAndTheFloorCarriesItsWeight) {
   // starting inside an obstacle is refused
   o.obstacles = {contact::parse_obstacle("plane:0,0,0.01")};
   EXPECT_THROW(simulate(cube, o, [](int, double, const VecX&, const VecX&) {}), InvalidArgument);
+}
+
+// Coulomb friction on an inclined plane (a free tissue cube on a plane tilted by theta, gravity down, implicit Euler):
+// with tan(theta) < mu the cube stays put (its contact nodes creep slower than the creep velocity); beyond it, it
+// slides with Newton's acceleration g (sin theta - mu cos theta), and without friction with g sin theta.
+struct Slide {
+  double acceleration;    // of the mean velocity along the slope between 0.1 s and 0.3 s, m/s^2
+  double contact_slip;    // the bottom face's mean displacement along the slope from 0.1 s (landed) to 0.3 s, m
+  double creep_velocity;  // eps_v, m/s: the default, 1e-3 of the cube's diagonal per second
+};
+Slide slide_on_a_slope(double theta_degrees, double mu) {
+  const double theta = theta_degrees * std::acos(-1.0) / 180.0;
+  const Mat3 tilt = Eigen::AngleAxisd(theta, Vec3::UnitX()).toRotationMatrix();
+  mesh::Mesh box = mesh::tet_box(0.02, 0.02, 0.02, 3, 3, 3);
+  std::vector<int> bottom;
+  for (int i = 0; i < box.node_count(); ++i)
+    if (box.nodes(i, 2) < 1e-12) bottom.push_back(i);
+  box.nodes = (box.nodes * tilt.transpose()).eval();
+  calibrate::ModelOptions mo;
+  mo.method = "any-nu-tet";
+  const calibrate::CalibratedModel cube = calibrate::calibrate_model(box, {material::Law::kLinear, 14630.0, 0.45}, mo);
+  const Vec3 normal = tilt * Vec3::UnitZ(), downhill = tilt * -Vec3::UnitY();  // the plane's normal, down the slope
+  contact::RigidTool plane(contact::ToolShape::kHalfSpace);
+  plane.set_pose({-1e-4 * normal, contact::rotation_to(normal)});  // 0.1 mm below: the cube drops onto it
+  SimulationOptions o;
+  o.simulator.integrator = Integrator::kImplicitEuler;
+  o.dynamics.dt = 1e-3;
+  o.dynamics.gravity = true;
+  o.clamp_bottom = false;
+  o.steps = 300;
+  o.every = 100;
+  o.obstacles = {plane};
+  o.friction = mu;
+  o.dynamics.damping_stiffness = 2e-3;  // damps the landing's vibrations (which make a contact walk), not the sliding
+  std::map<int, Vec3> mean_velocity;
+  Slide out{0.0, 0.0, 0.0};
+  const SimulationSummary sum = simulate(cube, o, [&](int k, double, const VecX& u, const VecX& v) {
+    mean_velocity[k] = v.reshaped(3, v.size() / 3).rowwise().mean();
+    const double sign = k == 300 ? 1.0 : k == 100 ? -1.0 : 0.0;
+    for (int i : bottom)
+      out.contact_slip += sign * u.segment<3>(3 * i).dot(downhill) / static_cast<double>(bottom.size());
+  });
+  out.creep_velocity = sum.creep_velocity;
+  out.acceleration = (mean_velocity.at(300) - mean_velocity.at(100)).dot(downhill) / 0.2;
+  return out;
+}
+
+TEST(Simulation, ABodyOnAnInclinedPlaneStaysBelowTheFrictionAngleAndSlidesAboveIt) {
+  const double g = 9.81, deg = std::acos(-1.0) / 180.0;
+  const Slide stuck = slide_on_a_slope(20.0, 0.5), sliding = slide_on_a_slope(35.0, 0.5),
+              frictionless = slide_on_a_slope(20.0, 0.0);
+  std::cout << "[slope] 20 deg, mu 0.5: slip " << stuck.contact_slip << " m, acceleration " << stuck.acceleration
+            << "; 35 deg, mu 0.5: " << sliding.acceleration << " m/s^2 (Newton "
+            << g * (std::sin(35 * deg) - 0.5 * std::cos(35 * deg)) << "), slip " << sliding.contact_slip
+            << " m; 20 deg, mu 0: " << frictionless.acceleration << " (Newton " << g * std::sin(20 * deg) << ")\n";
+  EXPECT_LT(std::abs(stuck.contact_slip), stuck.creep_velocity * 0.2);  // slower than eps_v from 0.1 s to 0.3 s
+  EXPECT_NEAR(sliding.acceleration, g * (std::sin(35 * deg) - 0.5 * std::cos(35 * deg)),
+              0.03 * g * (std::sin(35 * deg) - 0.5 * std::cos(35 * deg)));
+  EXPECT_NEAR(frictionless.acceleration, g * std::sin(20 * deg), 0.03 * g * std::sin(20 * deg));
+  EXPECT_GT(sliding.contact_slip, 1e3 * std::abs(stuck.contact_slip));
+  // either side of the friction angle atan(0.5) = 26.6 deg
+  const Slide below = slide_on_a_slope(25.0, 0.5), above = slide_on_a_slope(28.0, 0.5);
+  std::cout << "[slope] 25 deg: slip " << below.contact_slip << " m; 28 deg: " << above.acceleration
+            << " m/s^2 (Newton " << g * (std::sin(28 * deg) - 0.5 * std::cos(28 * deg)) << ")\n";
+  EXPECT_LT(std::abs(below.contact_slip), below.creep_velocity * 0.2);
+  EXPECT_NEAR(above.acceleration, g * (std::sin(28 * deg) - 0.5 * std::cos(28 * deg)),
+              0.05 * g * (std::sin(28 * deg) - 0.5 * std::cos(28 * deg)));
 }
 
 // A fast stab: the sphere driven 5 mm into the top at 1 m/s, 1 mm per 1 ms step, far more than the contact gap.

@@ -1,4 +1,5 @@
 #include <hooke/core/error.hpp>
+#include <hooke/mesh/measure.hpp>
 #include <hooke/solve/strain_response.hpp>
 #include <solve/problem.hpp>
 #include <string>
@@ -21,11 +22,14 @@ void ProblemData::apply_load(model::LoadKind kind, double traction, double strai
   model::apply(model::make_load_case(model.mesh, kind, t, model.material.thickness), problem);
 }
 
-PyTool ProblemData::add_tool(const std::string& shape, const contact::Pose& pose, double distance) {
+PyTool ProblemData::add_tool(const std::string& shape, const contact::Pose& pose, double distance,
+                             contact::Friction friction) {
   auto tool = std::make_shared<contact::RigidTool>(contact::parse_tool(shape));
   tool->set_pose(pose);
-  std::shared_ptr<const contact::ContactBlock> block =
+  std::shared_ptr<contact::ContactBlock> block =
       contact::boundary_contact(model.mesh, model.material.youngs_modulus, tool, distance);
+  if (friction.slip == 0.0) friction.slip = 1e-5 * mesh::bounding_box_diagonal(model.mesh);
+  block->set_friction(friction);
   contacts.push_back(block);
   const calibrate::BuiltModel built = calibrate::build_model(model);
   for (const auto& c : contacts) built.model->add(std::make_unique<contact::ContactBlock>(*c));

@@ -22,8 +22,9 @@ struct ProblemData {
   void apply_load(model::LoadKind kind, double traction, double strain);
   // A rigid tool (contact::parse_tool text) at `pose` against the body's boundary (contact::boundary_contact with
   // activation `distance`, 0: automatic). The problem's model is rebuilt with every tool's contact block: simulators
-  // and solves made before keep the model they had.
-  PyTool add_tool(const std::string& shape, const contact::Pose& pose, double distance);
+  // and solves made before keep the model they had. `friction` (slip 0: 1e-5 of the bounding-box diagonal) is the
+  // contact's Coulomb friction (contact::ContactBlock::set_friction).
+  PyTool add_tool(const std::string& shape, const contact::Pose& pose, double distance, contact::Friction friction);
   std::vector<std::shared_ptr<const contact::ContactBlock>> contacts;  ///< one per tool, in the order added
   // Flat positions as an (N, dim) array (a copy).
   pybind11::array_t<double> rows(const VecX& flat) const;

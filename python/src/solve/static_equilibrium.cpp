@@ -60,17 +60,21 @@ void define_static_equilibrium(py::module_& m) {
       .def(
           "add_tool",
           [](ProblemData& p, const std::string& shape, const py::object& position, const py::object& rotation,
-             double contact_distance) {
+             double contact_distance, double friction, double slip) {
             contact::Pose pose;
             pose.position = vector_argument(position, "position", 3);
             if (!rotation.is_none()) pose.rotation = matrix_argument(rotation, "rotation", 3, 3);
-            return p.add_tool(shape, pose, contact_distance);
+            return p.add_tool(shape, pose, contact_distance, {friction, slip});
           },
           py::arg("shape"), py::arg("position"), py::arg("rotation") = py::none(), py::arg("contact_distance") = 0.0,
+          py::arg("friction") = 0.0, py::arg("slip") = 0.0,
           "A rigid tool against the body's boundary (docs/contact.md): shape 'sphere:R', 'capsule:R,L' (m) or "
           "'plane', at position (3,) m with rotation (3, 3) (None: identity; a plane's outward normal and a capsule's "
           "axis are its z). contact_distance: the barrier's activation distance, m (0: 1 % of the mean boundary "
-          "edge). Returns a hooke.Tool. Simulators and solves made after this call see the tool.")
+          "edge). friction: Coulomb coefficient (>= 0); slip: the slip per step (or per press pose) below which "
+          "friction "
+          "acts as a stiff spring, m (0: 1e-5 of the body's bounding-box diagonal). 'plane' makes an obstacle the "
+          "body rests on. Returns a hooke.Tool. Simulators and solves made after this call see the tool.")
       .def(
           "apply_load",
           [](ProblemData& p, const std::string& kind, const py::object& traction, const py::object& strain) {

@@ -15,6 +15,14 @@ Barrier barrier(double d, double dhat) {
   return {-g * g * log_ratio, -2.0 * g * log_ratio - g * g / d, -2.0 * log_ratio - 4.0 * g / d + g * g / (d * d)};
 }
 
+FrictionSmoothing friction_smoothing(double y, double eps) {
+  // Shifted by eps/3 from Li et al.'s f0 so that no slip stores no energy; f0 is C^1 at eps (value eps - eps/3 = 2/3
+  // eps from both sides, slope 1).
+  if (y >= eps) return {y - eps / 3.0, 1.0, 0.0};
+  const double r = y / eps;
+  return {y * r * (1.0 - r / 3.0), r * (2.0 - r), 2.0 * (1.0 - r) / eps};
+}
+
 ContactBlock::ContactBlock(std::vector<int> nodes, VecX stiffness, double activation,
                            std::shared_ptr<const RigidTool> tool)
     : m_nodes(std::move(nodes)), m_stiffness(std::move(stiffness)), m_activation(activation), m_tool(std::move(tool)) {
@@ -40,13 +48,71 @@ void ContactBlock::for_each_touching(const Eigen::Ref<const VecX>& x, F&& f) con
   }
 }
 
+void ContactBlock::set_friction(const Friction& friction) {
+  if (!(friction.coefficient >= 0.0 && std::isfinite(friction.coefficient)))
+    throw InvalidArgument("contact: the friction coefficient must be >= 0, not " +
+                          std::to_string(friction.coefficient));
+  if (friction.coefficient > 0.0 && !(friction.slip > 0.0 && std::isfinite(friction.slip)))
+    throw InvalidArgument("contact: friction needs a slip distance > 0 m, not " + std::to_string(friction.slip));
+  m_friction->friction = friction;
+  m_friction->lagged.clear();
+}
+
+void ContactBlock::lag(const Eigen::Ref<const VecX>& x) const {
+  std::vector<Lagged>& lagged = m_friction->lagged;
+  lagged.clear();
+  const double mu = m_friction->friction.coefficient;
+  if (mu == 0.0) return;
+  const Pose& pose = m_tool->pose();
+  for_each_touching(x, [&](std::size_t k, const SurfaceDistance& s, const Barrier& b) {
+    if (!(s.distance > 0.0)) return;
+    // Any orthonormal pair across the normal: the slip is measured by its length, which does not depend on the pair.
+    Vec3 helper = Vec3::Zero();
+    Eigen::Index axis;
+    s.normal.cwiseAbs().minCoeff(&axis);
+    helper(axis) = 1.0;
+    Lagged l;
+    l.k = static_cast<int>(k);
+    l.limit = mu * m_stiffness(static_cast<Eigen::Index>(k)) * std::abs(b.slope);
+    l.tangent.col(0) = s.normal.cross(helper).normalized();
+    l.tangent.col(1) = s.normal.cross(l.tangent.col(0));
+    l.position = x.segment<3>(3 * m_nodes[k]);
+    l.touched = s.closest;
+    l.tool_point = pose.rotation.transpose() * (s.closest - pose.position);
+    lagged.push_back(l);
+  });
+}
+
+template <class F>
+void ContactBlock::for_each_slipping(const Eigen::Ref<const VecX>& x, F&& f) const {
+  const Pose& pose = m_tool->pose();
+  const double eps = m_friction->friction.slip;
+  for (const Lagged& l : m_friction->lagged) {
+    // the node's displacement over the step relative to the tool's surface point it touched (which moves with the
+    // tool), in the lagged tangent plane
+    const Vec3 tool_moved = pose.rotation * l.tool_point + pose.position - l.touched;
+    const Eigen::Vector2d slip =
+        l.tangent.transpose() * (x.segment<3>(3 * m_nodes[static_cast<std::size_t>(l.k)]) - l.position - tool_moved);
+    f(l, slip, friction_smoothing(slip.norm(), eps));
+  }
+}
+
 double ContactBlock::energy(const Eigen::Ref<const VecX>& x) const {
   double e = 0.0;  // +infinity once a node is at or inside the tool
   for_each_touching(x, [&](std::size_t k, const SurfaceDistance&, const Barrier& b) {
     e += m_stiffness(static_cast<Eigen::Index>(k)) * b.value;
   });
+  for_each_slipping(
+      x, [&](const Lagged& l, const Eigen::Vector2d&, const FrictionSmoothing& f) { e += l.limit * f.value; });
   return e;
 }
+
+namespace {
+
+/// The friction force's direction factor: f1(y) / y (1/m), finite at y = 0 (its limit 2 / eps).
+double slope_over_slip(double y, double eps) { return y < eps ? (2.0 - y / eps) / eps : 1.0 / y; }
+
+}  // namespace
 
 void ContactBlock::add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const {
   energy_and_add_gradient(x, gradient);
@@ -58,6 +124,12 @@ double ContactBlock::energy_and_add_gradient(const Eigen::Ref<const VecX>& x, Ei
     const double kappa = m_stiffness(static_cast<Eigen::Index>(k));
     e += kappa * b.value;
     if (std::isfinite(b.value)) gradient.segment<3>(3 * m_nodes[k]) += kappa * b.slope * s.normal;
+  });
+  const double eps = m_friction->friction.slip;
+  for_each_slipping(x, [&](const Lagged& l, const Eigen::Vector2d& slip, const FrictionSmoothing& f) {
+    e += l.limit * f.value;
+    gradient.segment<3>(3 * m_nodes[static_cast<std::size_t>(l.k)]) +=
+        l.limit * slope_over_slip(slip.norm(), eps) * (l.tangent * slip);
   });
   return e;
 }
@@ -79,22 +151,39 @@ void ContactBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const mod
     if (!project_psd) h += kappa * b.slope * s.curvature;
     scatter.add<3, 1>(static_cast<int>(k), h, values);
   });
+  // friction: mu lambda T (f1' u u^T / |u|^2 + f1 / |u| (I - u u^T / |u|^2)) T^T, positive semi-definite as is
+  const double eps = m_friction->friction.slip;
+  for_each_slipping(x, [&](const Lagged& l, const Eigen::Vector2d& slip, const FrictionSmoothing& f) {
+    const double y = slip.norm(), across = slope_over_slip(y, eps);
+    Eigen::Matrix2d hu = across * Eigen::Matrix2d::Identity();
+    if (y > 0.0) hu += (f.curvature - across) * slip * slip.transpose() / (y * y);
+    const Mat3 h = l.limit * l.tangent * hu * l.tangent.transpose();
+    scatter.add<3, 1>(l.k, h, values);
+  });
+}
+
+template <class F>
+void ContactBlock::for_each_force_on_tool(const Eigen::Ref<const VecX>& x, F&& f) const {
+  for_each_touching(x, [&](std::size_t k, const SurfaceDistance& s, const Barrier& b) {
+    f(s.closest, Vec3(m_stiffness(static_cast<Eigen::Index>(k)) * b.slope * s.normal));
+  });
+  const Pose& pose = m_tool->pose();
+  const double eps = m_friction->friction.slip;
+  for_each_slipping(x, [&](const Lagged& l, const Eigen::Vector2d& slip, const FrictionSmoothing&) {
+    f(Vec3(pose.rotation * l.tool_point + pose.position),
+      Vec3(l.limit * slope_over_slip(slip.norm(), eps) * (l.tangent * slip)));
+  });
 }
 
 Vec3 ContactBlock::tool_force(const Eigen::Ref<const VecX>& x) const {
-  Vec3 f = Vec3::Zero();
-  for_each_touching(x, [&](std::size_t k, const SurfaceDistance& s, const Barrier& b) {
-    f += m_stiffness(static_cast<Eigen::Index>(k)) * b.slope * s.normal;
-  });
-  return f;
+  Vec3 sum = Vec3::Zero();
+  for_each_force_on_tool(x, [&](const Vec3&, const Vec3& f) { sum += f; });
+  return sum;
 }
 
 Vec3 ContactBlock::tool_torque(const Eigen::Ref<const VecX>& x) const {
   Vec3 t = Vec3::Zero();
-  for_each_touching(x, [&](std::size_t k, const SurfaceDistance& s, const Barrier& b) {
-    const Vec3 f = m_stiffness(static_cast<Eigen::Index>(k)) * b.slope * s.normal;
-    t += (s.closest - m_tool->pose().position).cross(f);
-  });
+  for_each_force_on_tool(x, [&](const Vec3& at, const Vec3& f) { t += (at - m_tool->pose().position).cross(f); });
   return t;
 }
 

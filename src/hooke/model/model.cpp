@@ -24,6 +24,10 @@ bool Model::conservative() const {
   return true;
 }
 
+void Model::end_step(const Eigen::Ref<const VecX>& x) const {
+  for (const auto& b : m_blocks) b->end_step(x);
+}
+
 double Model::energy(const Eigen::Ref<const VecX>& x) const {
   double e = 0.0;
   for (const auto& b : m_blocks) e += b->energy(x);

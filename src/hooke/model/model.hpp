@@ -31,6 +31,8 @@ class Model {
   bool exact_hessian() const;
   /// Total elastic energy at x, J.
   double energy(const Eigen::Ref<const VecX>& x) const;
+  /// TermBlock::end_step of every block with the positions x (m) a time step starts from.
+  void end_step(const Eigen::Ref<const VecX>& x) const;
   /// dE/dx at x, N (the blocks' forces: for non-conservative blocks not a gradient). With an interaction,
   /// blocks that follow one (TermBlock::follows_interaction) evaluate under it.
   VecX gradient(const Eigen::Ref<const VecX>& x, const Interaction* interaction = nullptr) const;

@@ -43,6 +43,10 @@ class TermBlock {
   virtual const CentralSprings* central_springs() const { return nullptr; }
   /// False for a block that only marks states inadmissible (infinite energy) and adds no force (default true).
   virtual bool has_forces() const { return true; }
+  /// Called by solve::Simulator with the positions x (m) it starts from and after every time step, for blocks whose
+  /// energy depends on the state a step starts from (lagged friction: contact::ContactBlock::lag). A block keeps that
+  /// history in state shared with its copies, like a tool's pose; default nothing. Not thread-safe with evaluations.
+  virtual void end_step(const Eigen::Ref<const VecX>& x) const { (void)x; }
   /// Stored elastic energy at x, J. +infinity where x is outside the block's domain (an inverted element).
   virtual double energy(const Eigen::Ref<const VecX>& x) const = 0;
   /// Adds dE/dx at x (N) to `gradient` (same size as x).

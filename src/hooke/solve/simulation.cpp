@@ -21,6 +21,11 @@ void check_options(const SimulationOptions& o, int dim, int nodes) {
   if (o.steps < 1) throw InvalidArgument("the number of steps must be at least 1");
   if (o.tool && o.tool_path.empty()) throw InvalidArgument("a tool needs a path (its pose over time)");
   if (o.tool && dim != 3) throw InvalidArgument("a tool presses 3D bodies only");
+  if (!(o.friction >= 0.0 && std::isfinite(o.friction)))
+    throw InvalidArgument("the friction coefficient must be a finite number >= 0, not " + std::to_string(o.friction));
+  if (!(o.creep_velocity >= 0.0 && std::isfinite(o.creep_velocity)))
+    throw InvalidArgument("the creep velocity must be a finite number >= 0 m/s, not " +
+                          std::to_string(o.creep_velocity));
   if (o.probe_node < 0) return;
   const bool drive = o.probe_offset.size() > 0, push = o.probe_force.size() > 0;
   const VecX& v = drive ? o.probe_offset : o.probe_force;
@@ -57,10 +62,13 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
   VecX out_u(d * n), out_v(d * n);
   const calibrate::BuiltModel built = calibrate::build_model(cm);
   const VecX& rest = built.model->rest_positions();
+  const double creep = o.creep_velocity > 0.0 ? o.creep_velocity : 1e-3 * mesh::bounding_box_diagonal(cm.mesh);
+  const contact::Friction friction{o.friction, creep * o.dynamics.dt};
   const contact::ContactBlock* contact = nullptr;
   if (o.tool) {  // the barrier against the tool joins the model's terms (docs/contact.md)
     o.tool->set_pose(o.tool_path.at(0.0));
     auto block = contact::boundary_contact(cm.mesh, cm.material.youngs_modulus, o.tool, o.contact_distance);
+    block->set_friction(friction);
     contact = block.get();
     built.model->add(std::move(block));
   }
@@ -74,6 +82,7 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
                             std::to_string(obstacle.pose().position.x()) + ", " +
                             std::to_string(obstacle.pose().position.y()) + ", " +
                             std::to_string(obstacle.pose().position.z()) + " m");
+    block->set_friction(friction);
     floors.push_back(block.get());
     built.model->add(std::move(block));
   }
@@ -99,6 +108,8 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
   }
   SimulationSummary s;
   s.stable_time_step = sim.stable_time_step();
+  if (o.friction > 0.0) s.creep_velocity = creep;
+
   // Before a step the tool moves; nodes it has passed (it outran their gap) are put back outside it, so the step
   // starts from an admissible state.
   auto place_tool = [&](double t) { s.pushed_nodes += solve::move_tool(sim, *contact, *o.tool, o.tool_path.at(t)); };

@@ -35,6 +35,11 @@ struct SimulationOptions {
   /// Static rigid obstacles the body may rest on (half-spaces: contact::parse_obstacle), each with its own contact
   /// block on the boundary, frictionless; the body must start outside them.
   std::vector<contact::RigidTool> obstacles;
+  /// Coulomb friction coefficient of the tool's and the obstacles' contacts (>= 0; 0: frictionless), and the creep
+  /// velocity eps_v below which friction acts as a stiff viscous drag (m/s, > 0; 0: 1e-3 of the body's bounding-box
+  /// diagonal per second): a contact below the friction limit slips slower than eps_v (docs/contact.md).
+  double friction = 0.0;
+  double creep_velocity = 0.0;
 };
 
 struct SimulationSummary {
@@ -53,6 +58,7 @@ struct SimulationSummary {
   double smallest_gap = 0.0;      ///< with a tool: the smallest node-to-tool distance after any step, m (> 0)
   int pushed_nodes = 0;           ///< nodes moved out of the tool's way before a step (the tool outran their gap)
   double contact_distance = 0.0;  ///< the activation distance used, m
+  double creep_velocity = 0.0;    ///< with friction: eps_v used, m/s
   /// per obstacle: the force the body exerts on it at the end, N (x y z), and the smallest gap over the run, m
   std::vector<std::array<double, 3>> obstacle_force;
   std::vector<double> obstacle_gap;

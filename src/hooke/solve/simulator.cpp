@@ -82,6 +82,7 @@ Simulator::Simulator(model::Problem problem, Dynamics dynamics, SimulatorOptions
   m->integrator = detail::make_integrator_step(options, s);  // checks the Newton options and the model
   m->base_fixed = s.problem.fixed_dofs;
   s.x = model::initial_positions(s.problem);
+  s.model().end_step(s.x);  // history-dependent blocks (lagged friction) start from here
 }
 
 Simulator::~Simulator() = default;
@@ -94,6 +95,7 @@ StepReport Simulator::step(double dt) {
   m->update_probe_targets();
   StepReport r = m->integrator->step(m->s, dt);
   m->time_s += dt;
+  m->model().end_step(m->s.x);  // the next step starts here: lagged friction freezes its normal forces
   r.linear_iterations = static_cast<int>(m->integrator->linear_iterations());
   m->add_probe_force(r);
   return r;

@@ -12,6 +12,7 @@ std::vector<ToolPressStep> press_quasi_statically(const model::Problem& problem,
   std::vector<ToolPressStep> out;
   VecX x = model::initial_positions(problem);
   for (std::size_t k = 0; k < poses.size(); ++k) {
+    block.lag(x);  // friction, if any, resists the slip from the last equilibrium to the next
     tool.set_pose(poses[k]);
     block.push_out(x, 0.5 * block.activation());
     StaticOptions o = options;

@@ -20,7 +20,9 @@ struct ToolPressStep {
 };
 
 /// Moves `tool` through `poses` in order; at each pose the nodes the tool has passed are pushed out to half the
-/// activation distance (ContactBlock::push_out: an admissible start), then Newton from the last equilibrium.
+/// activation distance (ContactBlock::push_out: an admissible start), then Newton from the last equilibrium. With
+/// friction, each pose's slip is measured from the last equilibrium (ContactBlock::lag before the tool moves): the
+/// block's slip distance is then per pose.
 /// @param problem  the body with its supports and loads; its model holds `block`, whose tool is `tool`
 /// @throws SolverFailure naming the pose when a step has no stable equilibrium (the steps before it are kept in the
 ///         exception's message only: make the poses finer); InvalidArgument when block's tool is not `tool`
