@@ -14,6 +14,7 @@
 #include <hooke/mesh/generators.hpp>
 #include <hooke/model/problem.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
+#include <hooke/solve/tool_press.hpp>
 #include <iostream>
 #include <map>
 #include <thread>
@@ -223,6 +224,62 @@ TEST(LiveSimulation, AModelFileIsRecalibratedByItsMethodOrRefusesANewMaterial) {
   f.dynamics.damping_mass = 10.0;  // other settings still apply
   own.apply(f);
   EXPECT_EQ(own.settings().dynamics.damping_mass, 10.0);
+}
+
+}  // namespace
+}  // namespace hooke::interactive
+
+namespace hooke::interactive {
+namespace {
+
+// A sphere pressed 3 mm into the top of the live body (implicit Euler, ramped over 0.2 s, held to rest): no node ever
+// inside it, and at rest the force on it equals the quasi-static press's at the same pose (solve::press_quasi_
+// statically on a problem assembled here). A new nu keeps the tool and the clock; removing it leaves no force.
+TEST(LiveSimulation, ASpherePressedIntoTheTopSettlesOnTheStaticPressAndSurvivesARecalibration) {
+  const mesh::Mesh m = cylinder();
+  const double top = m.nodes.col(2).maxCoeff(), r = 0.005;
+  LiveSettings s = settings("any-nu-tet", 0.45);
+  s.simulator.integrator = solve::Integrator::kImplicitEuler;
+  LiveSimulation sim(m, s);
+  EXPECT_THROW(sim.set_tool("cube:1", {}), InvalidArgument);
+  sim.set_tool("sphere:0.005", {Vec3(0.0, 0.0, top + r + 1e-3), Mat3::Identity()});
+  ASSERT_TRUE(sim.tool());
+  double smallest = 1.0;
+  for (int k = 1; k <= 1000; ++k) {
+    sim.move_tool({Vec3(0.0, 0.0, top + r + 1e-3 - 4e-3 * std::min(1.0, k / 200.0)), Mat3::Identity()});
+    sim.step();
+    smallest = std::min(smallest, sim.tool()->smallest_gap);
+  }
+  EXPECT_GT(smallest, 0.0);
+  const Vec3 live = sim.tool()->force;
+
+  auto tool = std::make_shared<contact::RigidTool>(contact::ToolShape::kSphere, r);
+  const calibrate::BuiltModel built = calibrate::build_model(sim.model());
+  auto block = contact::boundary_contact(sim.model().mesh, sim.model().material.youngs_modulus, tool);
+  const contact::ContactBlock& contact = *block;
+  built.model->add(std::move(block));
+  model::Problem p = model::make_problem(built.model);
+  model::fix_nodes(p, sim.clamped_nodes());
+  std::vector<contact::Pose> poses;
+  for (int k = 0; k <= 6; ++k) poses.push_back({Vec3(0.0, 0.0, top + r - 0.5e-3 * k), Mat3::Identity()});
+  tool->set_pose(poses[0]);
+  const Vec3 still = solve::press_quasi_statically(p, contact, *tool, poses).back().tool_force;
+  std::cout << "[live press] " << live.transpose() << " N live, " << still.transpose() << " N static\n";
+  EXPECT_GT(still.z(), 0.01);
+  EXPECT_LT((live - still).norm(), 0.01 * still.norm());
+
+  const double t = sim.time();
+  LiveSettings stiffer = sim.settings();
+  stiffer.material.poisson_ratio = 0.3;
+  sim.apply(stiffer);
+  EXPECT_EQ(sim.time(), t);
+  ASSERT_TRUE(sim.tool());
+  for (int k = 0; k < 20; ++k) sim.step();
+  EXPECT_GT(sim.tool()->smallest_gap, 0.0);
+  EXPECT_GT(sim.tool()->force.z(), 0.0);
+  sim.remove_tool();
+  EXPECT_FALSE(sim.tool());
+  sim.step();
 }
 
 }  // namespace

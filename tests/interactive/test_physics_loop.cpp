@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <hooke/core/error.hpp>
 #include <hooke/core/quantile.hpp>
 #include <hooke/interactive/guarded.hpp>
@@ -71,6 +72,32 @@ TEST(PhysicsLoop, DrawingCommandsComeWithTheStateOfTheirTime) {
   EXPECT_TRUE(snap.grabbed.empty());
   EXPECT_TRUE(snap.stats.error.empty()) << snap.stats.error;
   EXPECT_GE(snap.stats.steps, 100);
+}
+
+// A scripted tool (the acceptance's press, on a small cylinder): at the screenshot it sits 3 mm into the top, pushed
+// back by the body with no node inside it; the snapshot carries it for the front end.
+TEST(PhysicsLoop, AScriptedToolPressesAndTheSnapshotCarriesItsForce) {
+  const mesh::Mesh m = cylinder();
+  const double top = m.nodes.col(2).maxCoeff();
+  char script[256];
+  std::snprintf(script, sizeof script,
+                "0 tool sphere:0.005 0 0 %.9g\n0 move-tool 0 0 %.9g over 0.1\n0.2 screenshot a.png\n0.2 quit\n",
+                top + 0.006, top + 0.002);
+  LiveSettings s = settings("any-nu-tet", 0.45);
+  s.simulator.integrator = solve::Integrator::kImplicitEuler;
+  PhysicsLoop loop(LiveSimulation(m, s), false);
+  loop.set_script(parse_script(script, "press.txt"));
+  loop.start();
+  std::vector<Snapshot> seen;
+  drive_script(loop, [&](const ScriptCommand&, const Snapshot& snap) { seen.push_back(snap); });
+  loop.stop();
+  ASSERT_EQ(seen.size(), 2u);
+  ASSERT_TRUE(seen[0].tool);
+  EXPECT_TRUE(seen[0].stats.error.empty()) << seen[0].stats.error;
+  EXPECT_NEAR(seen[0].tool->tool.pose().position.z(), top + 0.002, 1e-12);
+  EXPECT_GT(seen[0].tool->force.z(), 0.01);
+  EXPECT_GT(seen[0].tool->smallest_gap, 0.0);
+  EXPECT_GT(seen[0].tool->active, 0);
 }
 
 TEST(PhysicsLoop, WithoutAFrontEndDrawingCommandsAreSkipped) {

@@ -40,6 +40,22 @@ TEST(Script, ParsesEveryCommand) {
   EXPECT_EQ(s[7].key, "out.png");
   EXPECT_FALSE(is_drawing(s[8].action));
   EXPECT_EQ(s[11].action, ScriptAction::kQuit);
+  const auto t = parse_script(
+      "0 tool sphere:0.005 0 0 0.03 friction 0.3\n0.1 move-tool 0 0 0.022 over 0.3\n0.5 move-tool 0 0 0.03\n"
+      "0.6 tool capsule:0.001,0.01 0 0 0.04\n0.7 tool none\n",
+      "tool.txt");
+  ASSERT_EQ(t.size(), 5u);
+  EXPECT_EQ(t[0].action, ScriptAction::kTool);
+  EXPECT_EQ(t[0].key, "sphere:0.005");
+  EXPECT_EQ(t[0].vector, Vec3(0, 0, 0.03));
+  EXPECT_EQ(t[0].friction, 0.3);
+  EXPECT_EQ(t[1].action, ScriptAction::kMoveTool);
+  EXPECT_EQ(t[1].vector, Vec3(0, 0, 0.022));
+  EXPECT_EQ(t[1].duration, 0.3);
+  EXPECT_EQ(t[2].duration, 0.0);
+  EXPECT_EQ(t[3].friction, 0.0);
+  EXPECT_EQ(t[4].key, "none");
+  EXPECT_FALSE(is_drawing(t[1].action));
 }
 
 TEST(Script, RefusalsNameTheLine) {
@@ -56,6 +72,11 @@ TEST(Script, RefusalsNameTheLine) {
       {"0 colormap rainbow\n", "unknown colour map"},
       {"0 ghost on\n", "off, linear or stvk"},
       {"0 release now\n", "unexpected 'now'"},
+      {"0 tool cube:1 0 0 0\n", "tool 'cube:1'"},
+      {"0 tool sphere:0.01 0 0\n", "missing position"},
+      {"0 tool sphere:0.01 0 0 0 mu 0.3\n", "friction MU"},
+      {"0 tool sphere:0.01 0 0 0 friction -1\n", ">= 0"},
+      {"0 move-tool 0 0 0.01 over -1\n", ">= 0"},
   };
   for (const auto& [text, what] : bad) {
     try {

@@ -6,6 +6,7 @@
 #include <hooke/mesh/measure.hpp>
 #include <hooke/model/load_case.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
+#include <hooke/solve/tool_press.hpp>
 #include <string>
 
 namespace hooke::interactive {
@@ -54,6 +55,11 @@ struct LiveSimulation::Impl {
   // The secant stiffness and the probe's offset and force after the previous step (empty: none since the grab).
   MatX secant;
   VecX last_offset, last_force;
+  // The tool: its shape and pose (shared with the contact block the simulator's model holds), the block, the state
+  // reported after each step.
+  std::shared_ptr<contact::RigidTool> tool;
+  std::shared_ptr<contact::ContactBlock> contact;
+  std::optional<LiveTool> tool_state;
 
   void forget_local_model() {
     contact_stiffness.resize(0, 0);
@@ -131,12 +137,22 @@ struct LiveSimulation::Impl {
 
   int dim() const { return model.mesh.dim(); }
 
-  // Builds the simulator for the current model and settings at state (x, v) and time 0; re-grabs the probe's nodes
+  // Builds the simulator for the current model and settings at state (x, v) and time t; re-grabs the probe's nodes
   // where they are, keeping their target.
-  void rebuild(const VecX& x, const VecX& v) {
+  void rebuild(const VecX& x, const VecX& v, double t) {
     const int d = dim();
     forget_local_model();
-    model::Problem problem = model::make_problem(built.model);
+    // With a tool, the simulator's model is the body's terms and the contact block (its stiffness from the current
+    // E); `built`, which drawing threads share, stays the body's alone.
+    std::shared_ptr<model::Model> simulated = built.model;
+    if (tool) {
+      const double friction = contact ? contact->friction().coefficient : 0.0;
+      contact = contact::boundary_contact(model.mesh, model.material.youngs_modulus, tool);
+      contact->set_friction({friction, 1e-3 * mesh::bounding_box_diagonal(model.mesh) * settings.dynamics.dt});
+      simulated = calibrate::build_model(model).model;
+      simulated->add(std::make_unique<contact::ContactBlock>(*contact));
+    }
+    model::Problem problem = model::make_problem(simulated);
     clamped.clear();
     if (!model.surface) {
       clamped = model::make_load_case(model.mesh, model::LoadKind::kStretch, 0.0, model.material.thickness).fixed_nodes;
@@ -145,6 +161,7 @@ struct LiveSimulation::Impl {
     solve::Simulator s(std::move(problem), solve::make_dynamics(settings.dynamics, model.masses, d),
                        settings.simulator);  // checks the integrator's options
     s.set_state(x, v);
+    s.set_time(t);
     sim.emplace(std::move(s));
     if (!probe.nodes.empty()) {
       // The driven nodes sit at grab position + offset: grab them there, with the offset from now on zero.
@@ -155,6 +172,30 @@ struct LiveSimulation::Impl {
       sim->set_probe(probe);
       update_interaction();
     }
+    if (tool) place_tool(tool->pose());
+  }
+
+  // Moves the tool, putting nodes it passed back outside it, and reports its contact at the current state.
+  void place_tool(const contact::Pose& pose) {
+    const int pushed = solve::move_tool(*sim, *contact, *tool, pose);
+    report_tool();
+    tool_state->pushed_nodes += pushed;
+  }
+
+  void report_tool() {
+    if (!tool) {
+      tool_state.reset();
+      return;
+    }
+    const int pushed = tool_state ? tool_state->pushed_nodes : 0;
+    const VecX& x = sim->positions();
+    tool_state = LiveTool{*tool,
+                          contact->tool_force(x),
+                          contact->active_count(x),
+                          contact->smallest_distance(x),
+                          contact->activation(),
+                          contact->friction().coefficient,
+                          pushed};
   }
 
   // The surface model's Eq. 4 weights follow the probe: p_f at the first grabbed node, F_f along the drag.
@@ -177,7 +218,7 @@ struct LiveSimulation::Impl {
     offset.setZero(dim());
     force.setZero(dim());
     const VecX& rest = built.model->rest_positions();
-    rebuild(rest, VecX::Zero(rest.size()));
+    rebuild(rest, VecX::Zero(rest.size()), 0.0);
     interaction.reset();
     sim->problem().interaction.reset();
   }
@@ -243,6 +284,7 @@ void LiveSimulation::apply(const LiveSettings& s) {
     built = calibrate::build_model(*model);
   }
   const VecX x = m->sim->positions(), v = m->sim->velocities();
+  const double t = m->sim->time();
   Impl next;
   next.settings = s;
   next.model = model ? std::move(*model) : m->model;
@@ -251,8 +293,11 @@ void LiveSimulation::apply(const LiveSettings& s) {
   next.grab_positions = m->grab_positions;
   next.offset = m->offset;
   next.force = m->force;
+  next.tool = m->tool;
+  next.contact = m->contact;
+  next.tool_state = m->tool_state;
   next.model_version = m->model_version + (recalibrate ? 1 : 0);
-  next.rebuild(x, v);
+  next.rebuild(x, v, t);
   *m = std::move(next);
 }
 
@@ -269,6 +314,7 @@ solve::StepReport LiveSimulation::step() {
   const int d = m->dim();
   m->force = r.probe_force.size() == d ? VecX(r.probe_force) : VecX::Zero(d);
   ++m->steps;
+  if (m->tool) m->report_tool();
   if (m->settings.haptic_stiffness == HapticStiffness::kSecant && !m->probe.nodes.empty()) m->update_secant();
   return r;
 }
@@ -340,6 +386,36 @@ void LiveSimulation::release() {
   m->interaction.reset();
   m->sim->problem().interaction.reset();
 }
+
+void LiveSimulation::set_tool(const std::string& shape, const contact::Pose& pose, double friction) {
+  if (m->dim() != 3) throw InvalidArgument("a tool presses 3D bodies only");
+  if (!(friction >= 0.0 && std::isfinite(friction)))
+    throw InvalidArgument("the friction coefficient must be a finite number >= 0, not " + std::to_string(friction));
+  auto tool = std::make_shared<contact::RigidTool>(contact::parse_tool(shape));
+  tool->set_pose(pose);
+  auto block = contact::boundary_contact(m->model.mesh, m->model.material.youngs_modulus, tool);
+  block->set_friction({friction, 1e-3 * mesh::bounding_box_diagonal(m->model.mesh) * m->settings.dynamics.dt});
+  m->tool = std::move(tool);
+  m->contact = std::move(block);
+  m->tool_state.reset();
+  const VecX x = m->sim->positions(), v = m->sim->velocities();  // copies: rebuild replaces the simulator
+  m->rebuild(x, v, m->sim->time());
+}
+
+void LiveSimulation::move_tool(const contact::Pose& pose) {
+  if (m->tool) m->place_tool(pose);
+}
+
+void LiveSimulation::remove_tool() {
+  if (!m->tool) return;
+  m->tool.reset();
+  m->contact.reset();
+  m->tool_state.reset();
+  const VecX x = m->sim->positions(), v = m->sim->velocities();  // copies: rebuild replaces the simulator
+  m->rebuild(x, v, m->sim->time());
+}
+
+const std::optional<LiveTool>& LiveSimulation::tool() const { return m->tool_state; }
 
 const std::vector<int>& LiveSimulation::grabbed() const { return m->probe.nodes; }
 const VecX& LiveSimulation::grab_positions() const { return m->grab_positions; }

@@ -7,6 +7,7 @@
 /// Not thread-safe: one thread owns it (interactive::PhysicsLoop runs it in its own thread).
 #include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/calibrate/model_factory.hpp>
+#include <hooke/contact/contact_block.hpp>
 #include <hooke/interactive/haptic_model.hpp>
 #include <hooke/solve/contact_stiffness.hpp>
 #include <hooke/solve/dynamics_setup.hpp>
@@ -36,6 +37,17 @@ struct LiveSettings {
   /// the 11 425-node bench drag at a 0.5 s deformation step renders within 0.95 % of the full-rate force, 12 %
   /// linear); used with kCondensed and kSecant, default on
   bool haptic_curvature = true;
+};
+
+/// A rigid tool pressing the live body (docs/contact.md) after the last step.
+struct LiveTool {
+  contact::RigidTool tool;        ///< shape and pose
+  Vec3 force = Vec3::Zero();      ///< the force the body exerts on it, N
+  int active = 0;                 ///< boundary nodes within the contact distance
+  double smallest_gap = 0.0;      ///< of a boundary node to the tool, m (> 0: none inside)
+  double contact_distance = 0.0;  ///< the barrier's activation distance, m
+  double friction = 0.0;          ///< Coulomb coefficient
+  int pushed_nodes = 0;           ///< nodes put back outside it when it moved faster than their gap
 };
 
 /// A static equilibrium under the probe's current displacement (what the viewer's FEM ghost shows).
@@ -87,6 +99,21 @@ class LiveSimulation {
   void drag(const VecX& offset);
   /// Lets go of the grabbed nodes.
   void release();
+
+  /// Puts a rigid tool ("sphere:R", "capsule:R,L", m: contact::parse_tool) at `pose` against the body's boundary
+  /// (contact::boundary_contact: the barrier's activation distance 1 % of the mean boundary edge, kappa from the
+  /// model's E), with Coulomb friction `friction` (creep velocity 1e-3 of the bounding-box diagonal per s). Replaces
+  /// the tool there was; kept across apply() (its stiffness follows a new E) and reset(). Nodes inside it are put
+  /// back outside. Works beside a grab.
+  /// @throws InvalidArgument for a malformed shape, a 2D body, a negative or non-finite friction
+  void set_tool(const std::string& shape, const contact::Pose& pose, double friction = 0.0);
+  /// Moves the tool (before the next step; nodes it passed are put back outside it). No effect without a tool.
+  /// @throws InvalidArgument for a non-finite pose or a matrix that is not a rotation
+  void move_tool(const contact::Pose& pose);
+  /// Takes the tool away.
+  void remove_tool();
+  /// The tool and its contact after the last step (empty without a tool).
+  const std::optional<LiveTool>& tool() const;
   const std::vector<int>& grabbed() const;  ///< grabbed nodes, model numbering (empty when released)
   /// Where the grabbed nodes were grabbed, flat, m (dim per grabbed node).
   const VecX& grab_positions() const;

@@ -240,6 +240,7 @@ void PhysicsLoop::stage() {
   s.interaction = m_sim.interaction();
   s.settings = m_sim.settings();
   s.model_version = m_sim.model_version();
+  s.tool = m_sim.tool();
   m_work_stats.sim_time = m_sim.time();
   s.stats = m_work_stats;
 }
@@ -297,6 +298,24 @@ bool PhysicsLoop::run_script_commands() {
           m_drag_t1 = -1.0;
           m_sim.release();
           break;
+        case ScriptAction::kTool:
+          m_tool_t1 = -1.0;
+          if (c.key == "none")
+            m_sim.remove_tool();
+          else
+            m_sim.set_tool(c.key, {c.vector, Mat3::Identity()}, c.friction);
+          break;
+        case ScriptAction::kMoveTool:
+          if (!m_sim.tool()) throw InvalidArgument("move-tool needs a tool (the tool command)");
+          m_tool_from = m_sim.tool()->tool.pose().position;
+          m_tool_to = c.vector;
+          m_tool_t0 = m_sim.time();
+          m_tool_t1 = m_tool_t0 + c.duration;
+          if (c.duration <= 0.0) {
+            m_sim.move_tool({m_tool_to, Mat3::Identity()});
+            m_tool_t1 = -1.0;
+          }
+          break;
         case ScriptAction::kSet: {
           LiveSettings s = m_sim.settings();
           apply_setting(s, c.key, c.value);
@@ -305,7 +324,7 @@ bool PhysicsLoop::run_script_commands() {
           break;
         }
         case ScriptAction::kReset:
-          m_drag_t1 = -1.0;
+          m_drag_t1 = m_tool_t1 = -1.0;
           m_sim.reset();
           break;
         case ScriptAction::kPause:
@@ -364,6 +383,12 @@ void PhysicsLoop::take_inputs() {
         m_drag_t1 > m_drag_t0 ? std::clamp((m_sim.time() - m_drag_t0) / (m_drag_t1 - m_drag_t0), 0.0, 1.0) : 1.0;
     m_sim.drag(m_drag_from + f * (m_drag_to - m_drag_from));
     if (f >= 1.0) m_drag_t1 = -1.0;
+  }
+  if (m_tool_t1 >= 0.0 && m_sim.tool()) {  // and a scripted tool move
+    const double f =
+        m_tool_t1 > m_tool_t0 ? std::clamp((m_sim.time() - m_tool_t0) / (m_tool_t1 - m_tool_t0), 0.0, 1.0) : 1.0;
+    m_sim.move_tool({m_tool_from + f * (m_tool_to - m_tool_from), m_sim.tool()->tool.pose().rotation});
+    if (f >= 1.0) m_tool_t1 = -1.0;
   }
   {  // a haptic device's offset, the newest
     std::unique_lock lock(m_haptic_mutex);

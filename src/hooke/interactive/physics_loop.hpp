@@ -50,7 +50,8 @@ struct Snapshot {
   VecX probe_offset;         ///< m (dim)
   std::optional<model::Interaction> interaction;
   LiveSettings settings;
-  long model_version = 0;  ///< increases when the model is recalibrated or replaced
+  long model_version = 0;        ///< increases when the model is recalibrated or replaced
+  std::optional<LiveTool> tool;  ///< the tool pressing the body and its force (empty: none)
   PhysicsStats stats;
 };
 
@@ -151,6 +152,9 @@ class PhysicsLoop {
   // A drag being ramped by the script: from m_drag_from to m_drag_to between m_drag_t0 and m_drag_t1 (sim time).
   VecX m_drag_from, m_drag_to;
   double m_drag_t0 = 0.0, m_drag_t1 = -1.0;
+  // A tool move being ramped by the script, likewise.
+  Vec3 m_tool_from = Vec3::Zero(), m_tool_to = Vec3::Zero();
+  double m_tool_t0 = 0.0, m_tool_t1 = -1.0;
 };
 
 /// Carries out one `set` script command on settings (young, poisson, the live model settings: method, density, ...;

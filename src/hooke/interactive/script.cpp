@@ -1,6 +1,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <hooke/contact/rigid_tool.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/interactive/physics_loop.hpp>
 #include <hooke/interactive/script.hpp>
@@ -36,6 +37,14 @@ struct LineParser {
     if (ec != std::errc() || end != w.data() + w.size() || v < 0)
       fail(std::string("'") + w + "' is not a node number (" + what + ")");
     return v;
+  }
+  // "over SECONDS" when words are left: a ramp time (>= 0), else 0.
+  double ramp() {
+    if (next >= words.size()) return 0.0;
+    if (word("'over'") != "over") fail("expected 'over SECONDS' after the position or offset");
+    const double t = number("ramp time, s");
+    if (t < 0.0) fail("the ramp time must be >= 0 s");
+    return t;
   }
   void done() const {
     if (next < words.size()) fail("unexpected '" + words[next] + "'");
@@ -80,11 +89,27 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     } else if (verb == "drag") {
       c.action = ScriptAction::kDrag;
       for (int a = 0; a < 3; ++a) c.vector(a) = p.number("offset, m");
-      if (p.next < p.words.size()) {
-        if (p.word("'over'") != "over") p.fail("expected 'over SECONDS' after the offset");
-        c.duration = p.number("ramp time, s");
-        if (c.duration < 0.0) p.fail("the ramp time must be >= 0 s");
+      c.duration = p.ramp();
+    } else if (verb == "tool") {
+      c.action = ScriptAction::kTool;
+      c.key = p.word("tool shape (sphere:R, capsule:R,L or none)");
+      if (c.key != "none") {
+        try {
+          contact::parse_tool(c.key);
+        } catch (const InvalidArgument& e) {
+          p.fail(e.what());
+        }
+        for (int a = 0; a < 3; ++a) c.vector(a) = p.number("position, m");
+        if (p.next < p.words.size()) {
+          if (p.word("'friction'") != "friction") p.fail("expected 'friction MU' after the position");
+          c.friction = p.number("friction coefficient");
+          if (c.friction < 0.0) p.fail("the friction coefficient must be >= 0");
+        }
       }
+    } else if (verb == "move-tool") {
+      c.action = ScriptAction::kMoveTool;
+      for (int a = 0; a < 3; ++a) c.vector(a) = p.number("position, m");
+      c.duration = p.ramp();
     } else if (verb == "release" || verb == "reset" || verb == "pause" || verb == "resume" || verb == "quit") {
       c.action = verb == "release"  ? ScriptAction::kRelease
                  : verb == "reset"  ? ScriptAction::kReset

@@ -7,6 +7,9 @@
 ///     0.00 grab-nearest 0 0 0.1    grab the node nearest to a point, m
 ///     0.01 drag 0 0 0.003 over 0.5 drive the grabbed nodes to grab position + (dx, dy, dz) m, ramped over 0.5 s
 ///     0.60 release
+///     0.00 tool sphere:0.005 0 0 0.03        a rigid tool (sphere:R, capsule:R,L in m) at a position, m; optional
+///                                            "friction MU"; "tool none" takes it away (docs/contact.md)
+///     0.01 move-tool 0 0 0.022 over 0.3      move it to a position, m, ramped over 0.3 s (0: at once)
 ///     0.70 set poisson 0.45        set young|poisson|density|method|integrator|dt|damping-mass|damping-stiffness|
 ///                                  influence-radius|gravity (on|off)
 ///     0.70 reset | pause | resume
@@ -29,6 +32,8 @@ enum class ScriptAction {
   kGrabNearest,
   kDrag,
   kRelease,
+  kTool,
+  kMoveTool,
   kSet,
   kReset,
   kPause,
@@ -43,9 +48,10 @@ struct ScriptCommand {
   double time = 0.0;  ///< simulated time, s (>= 0)
   ScriptAction action = ScriptAction::kQuit;
   std::vector<int> nodes;      ///< grab
-  Vec3 vector = Vec3::Zero();  ///< grab-nearest: point, m; drag: offset, m
-  double duration = 0.0;       ///< drag: ramp time, s (0: at once)
-  std::string key;             ///< set: what; colormap / ghost: the choice; screenshot: the file
+  Vec3 vector = Vec3::Zero();  ///< grab-nearest: point, m; drag: offset, m; tool, move-tool: position, m
+  double duration = 0.0;       ///< drag, move-tool: ramp time, s (0: at once)
+  double friction = 0.0;       ///< tool: Coulomb coefficient
+  std::string key;             ///< set: what; colormap / ghost: the choice; screenshot: the file; tool: the shape
   std::string value;           ///< set: the value as written
   int line = 0;                ///< 1-based line in the file
 };

@@ -102,6 +102,10 @@ StepReport Simulator::step(double dt) {
 }
 
 double Simulator::time() const { return m->time_s; }
+void Simulator::set_time(double time) {
+  if (!std::isfinite(time)) throw InvalidArgument("Simulator::set_time: the time must be finite");
+  m->time_s = time;
+}
 const VecX& Simulator::positions() const { return m->s.x; }
 const VecX& Simulator::velocities() const { return m->s.v; }
 void Simulator::set_state(const VecX& positions, const VecX& velocities) {

@@ -98,7 +98,9 @@ class Simulator {
   /// @pre dt > 0
   StepReport step(double dt);
 
-  double time() const;             ///< s
+  double time() const;  ///< s
+  /// Sets the simulated time, s (finite; a simulator rebuilt from another's state continues its clock).
+  void set_time(double time);
   const VecX& positions() const;   ///< flat, m
   const VecX& velocities() const;  ///< flat, m/s
   void set_state(const VecX& positions, const VecX& velocities);
