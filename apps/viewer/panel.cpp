@@ -98,7 +98,9 @@ void rates(const interactive::PhysicsStats& s, double draw_rate, const interacti
 
 void probe(ViewState& state, const interactive::Snapshot& snap) {
   const double f = snap.probe_force.size() > 0 ? snap.probe_force.norm() : 0.0;
-  if (snap.grabbed.empty())
+  if (snap.grabbed.empty() && state.press_mode)
+    ImGui::Text("press: left-drag on the surface to press the sphere into it");
+  else if (snap.grabbed.empty())
     ImGui::Text("probe: left-drag on the surface to grab");
   else
     ImGui::Text("probe: %zu node(s), |F| = %.4g N, offset %.3g mm", snap.grabbed.size(), f,
@@ -106,10 +108,34 @@ void probe(ViewState& state, const interactive::Snapshot& snap) {
   std::vector<float> values;
   for (const auto& [t, v] : state.force_history) values.push_back(v);
   if (!values.empty())
-    ImGui::PlotLines("|F| (N), 5 s", values.data(), static_cast<int>(values.size()), 0, nullptr, 0.0f, FLT_MAX,
-                     ImVec2(0, 60));
+    ImGui::PlotLines(snap.tool ? "|F| tool (N), 5 s" : "|F| (N), 5 s", values.data(), static_cast<int>(values.size()),
+                     0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
   float radius_mm = static_cast<float>(1e3 * state.grab_radius);
   if (ImGui::SliderFloat("grab radius (mm)", &radius_mm, 0.0f, 20.0f)) state.grab_radius = 1e-3 * radius_mm;
+}
+
+// The mouse's mode and the pressing tool: its shape, where it is, the force the body exerts on it.
+void tool(ViewState& state, const interactive::Snapshot& snap) {
+  int mode = state.press_mode ? 1 : 0;
+  ImGui::Text("left mouse (T):");
+  ImGui::SameLine();
+  ImGui::RadioButton("grab", &mode, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("press", &mode, 1);
+  state.press_mode = mode == 1;
+  if (state.press_mode) {
+    float radius_mm = static_cast<float>(1e3 * state.tool_radius), mu = static_cast<float>(state.tool_friction);
+    if (ImGui::SliderFloat("sphere radius (mm, 0: auto)", &radius_mm, 0.0f, 20.0f))
+      state.tool_radius = 1e-3 * radius_mm;
+    if (ImGui::SliderFloat("friction mu", &mu, 0.0f, 1.0f)) state.tool_friction = mu;
+  }
+  if (!snap.tool) return;
+  const interactive::LiveTool& t = *snap.tool;
+  const Vec3& c = t.tool.pose().position;
+  ImGui::Text("tool %s at %.4g, %.4g, %.4g mm", t.tool.description().c_str(), 1e3 * c.x(), 1e3 * c.y(), 1e3 * c.z());
+  ImGui::Text("contact force %.4g N (%.3g, %.3g, %.3g); %d nodes in contact", t.force.norm(), t.force.x(), t.force.y(),
+              t.force.z(), t.active);
+  ImGui::Text("smallest gap %.3g um (contact distance %.3g um)", 1e6 * t.smallest_gap, 1e6 * t.contact_distance);
 }
 
 }  // namespace
@@ -123,6 +149,7 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
   rates(snap.stats, state.draw_rate, state.haptic);
   ImGui::Separator();
   probe(state, snap);
+  tool(state, snap);
   ImGui::Separator();
 
   interactive::LiveSettings& e = state.edit;
@@ -206,7 +233,7 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
   r.toggle_pause = ImGui::Button(state.paused ? "resume (Space)" : "pause (Space)");
   ImGui::SameLine();
   r.reset = ImGui::Button("reset (R)");
-  ImGui::TextDisabled("left-drag: grab  right-drag: orbit  middle-drag: pan  wheel: zoom");
+  ImGui::TextDisabled("left-drag: grab or press (T)  right-drag: orbit  middle-drag: pan  wheel: zoom");
   ImGui::End();
   return r;
 }

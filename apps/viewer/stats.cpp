@@ -19,6 +19,19 @@ void write_viewer_stats(const std::string& path, const interactive::Snapshot& sn
       {"dt_s", snap.settings.dynamics.dt}};
   for (int a = 0; a < dim; ++a) extra.emplace_back(std::string("probe_force_") + "xyz"[a], f(a));
   if (state.ghost_force.size() == dim) extra.emplace_back("fem_holding_force_n", state.ghost_force.norm());
+  if (snap.tool) {  // the pressing tool after the last step
+    const interactive::LiveTool& t = *snap.tool;
+    extra.insert(extra.end(), {{"tool_force_n", t.force.norm()},
+                               {"tool_force_x", t.force.x()},
+                               {"tool_force_y", t.force.y()},
+                               {"tool_force_z", t.force.z()},
+                               {"tool_contact_nodes", static_cast<double>(t.active)},
+                               {"tool_smallest_gap_m", t.smallest_gap},
+                               {"tool_contact_distance_m", t.contact_distance},
+                               {"tool_x", t.tool.pose().position.x()},
+                               {"tool_y", t.tool.pose().position.y()},
+                               {"tool_z", t.tool.pose().position.z()}});
+  }
   if (haptics) {
     const interactive::HapticStats& h = state.haptic;
     extra.insert(extra.end(), {{"haptic_target_rate_hz", h.target_rate},

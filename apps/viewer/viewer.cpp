@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <hooke/calibrate/model_file.hpp>
+#include <hooke/contact/tool_surface.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/interactive/fields.hpp>
 #include <hooke/interactive/guarded.hpp>
@@ -167,7 +168,20 @@ class Viewer {
 
   // The mouse's and keys' events: to the physics, or the probe's offset to the haptic device.
   void handle_input() {
-    const InputEvents e = m_input.poll(m_window, m_camera, m_snap, m_view, m_state.grab_radius, m_dim);
+    const InputEvents e = m_input.poll(m_window, m_camera, m_snap, m_view, m_state.grab_radius, m_dim,
+                                       m_state.press_mode ? tool_radius() : 0.0);
+    if (e.toggle_press) m_state.press_mode = !m_state.press_mode;
+    if (e.place_tool) {
+      char shape[64];
+      std::snprintf(shape, sizeof shape, "sphere:%.9g", tool_radius());
+      m_loop.post([shape = std::string(shape), at = *e.place_tool,
+                   mu = m_state.tool_friction](interactive::LiveSimulation& sim) {
+        sim.set_tool(shape, {at, Mat3::Identity()}, mu);
+      });
+    }
+    if (e.move_tool)
+      m_loop.post([at = *e.move_tool](interactive::LiveSimulation& sim) { sim.move_tool({at, Mat3::Identity()}); });
+    if (e.lift_tool) m_loop.post([](interactive::LiveSimulation& sim) { sim.remove_tool(); });
     if (e.grab) {
       m_loop.post([nodes = *e.grab](interactive::LiveSimulation& sim) { sim.grab(nodes); });
       set_device(VecX::Zero(m_dim));
@@ -185,6 +199,24 @@ class Viewer {
     }
     if (e.toggle_pause) toggle_pause();
     if (e.reset) m_loop.post([](interactive::LiveSimulation& sim) { sim.reset(); });
+  }
+
+  // The pressing sphere's radius, m: the panel's, or 5 % of the scene.
+  double tool_radius() const { return m_state.tool_radius > 0.0 ? m_state.tool_radius : 0.05 * m_scene_size; }
+
+  // The tool as the last snapshot has it, lit in grey (its triangles made again when its shape changes).
+  void draw_tool(const Mat4f& view, const Mat4f& projection) {
+    if (!m_snap.tool) return;
+    const contact::ToolSurface surface = contact::tool_surface(m_snap.tool->tool, 48);
+    const std::string shape = m_snap.tool->tool.description();
+    if (!m_tool_renderer || shape != m_tool_shape) {
+      m_tool_renderer = std::make_unique<Renderer>(surface.triangles, std::vector<std::array<int, 2>>{});
+      m_tool_shape = shape;
+    }
+    m_tool_renderer->draw_surface(
+        surface.nodes,
+        std::vector<std::array<float, 3>>(static_cast<size_t>(surface.nodes.rows()), {0.62f, 0.64f, 0.68f}), view,
+        projection);
   }
 
   void solve_ghost(bool now) { m_ghost.solve(m_loop, m_snap, m_state, now); }
@@ -208,9 +240,10 @@ class Viewer {
       m_state.haptic_force = m_haptics->force();
     }
     // The force history: the last 5 s of simulated time.
-    if (m_snap.probe_force.size() > 0 &&
+    if ((m_snap.probe_force.size() > 0 || m_snap.tool) &&
         (m_state.force_history.empty() || m_state.force_history.back().first < m_snap.stats.sim_time)) {
-      m_state.force_history.emplace_back(m_snap.stats.sim_time, static_cast<float>(m_snap.probe_force.norm()));
+      const double f = m_snap.tool ? m_snap.tool->force.norm() : m_snap.probe_force.norm();
+      m_state.force_history.emplace_back(m_snap.stats.sim_time, static_cast<float>(f));
       while (m_state.force_history.front().first < m_snap.stats.sim_time - 5.0) m_state.force_history.pop_front();
     }
     if (!ImGui::IsAnyItemActive()) {  // the panel follows the physics (a script may change settings)
@@ -241,6 +274,7 @@ class Viewer {
     if (m_state.ghost != Ghost::kOff && m_state.ghost_positions)
       m_renderer.draw_wireframe(interactive::positions_3d(*m_state.ghost_positions, m_dim), {0.1f, 0.1f, 0.1f}, view,
                                 projection);
+    draw_tool(view, projection);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   }
 
@@ -268,6 +302,8 @@ class Viewer {
   std::unique_ptr<interactive::HapticLoop> m_haptics;  // last: stopped before what it reads goes
   int m_width = 1, m_height = 1;
   DrawCounts m_draw;
+  std::unique_ptr<Renderer> m_tool_renderer;  // the tool's triangles, for m_tool_shape
+  std::string m_tool_shape;
 };
 
 }  // namespace

@@ -208,11 +208,13 @@ TEST(Simulation, ASpherePressedIntoTheTopSettlesOnTheStaticForce) {
     const double fz = steps.back().tool_force.z(), dz = s.tool_force.back()[3];
     std::cout << "[press] " << integrator_name(integrator) << ": dynamic " << dz << " N, static " << fz << " N\n";
     EXPECT_GT(fz, 0.0);
-    // Implicit Euler's steps converge: the static force to 2 %. The quasi-Newton steps end at their iteration budget
-    // (their initial Hessian, the body's at rest, lacks the barrier's stiffness): measured 4.4 % high.
-    EXPECT_NEAR(dz, fz, (integrator == Integrator::kImplicitEuler ? 0.02 : 0.1) * fz) << integrator_name(integrator);
+    // Both settle on the static force (measured equal to six digits). Without the contact's stiffness in its initial
+    // Hessian the quasi-Newton steps ended at their iteration budget, 4.4 % high; with it, 21 of 300 steps (during
+    // the press) end above the tolerance.
+    EXPECT_NEAR(dz, fz, 0.01 * fz) << integrator_name(integrator);
     std::cout << "[press] " << integrator_name(integrator) << ": " << s.not_converged
               << " of 300 steps above tolerance\n";
+    EXPECT_LT(s.not_converged, 30) << integrator_name(integrator);
   }
 }
 

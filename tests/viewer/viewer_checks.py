@@ -2,7 +2,7 @@
 """The viewer under Xvfb, scripted, judged by its pixels, its stats and its model file.
 
 Usage: viewer_checks.py CHECK HOOKE MESHES OUTDIR
-CHECK: rest | drag | error-uniform | force | nu | refusals | record. HOOKE is the hooke CLI (its `view` command is the
+CHECK: rest | drag | error-uniform | force | nu | refusals | record | press. HOOKE is the hooke CLI (its `view` command is the
 viewer). Each check is one ctest entry, so they run in parallel and fail separately.
 """
 import json
@@ -187,6 +187,44 @@ k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
         code, log = view(hooke, mesh, out, "refuse", script, *options, "--screenshot", shot, env=env, xvfb=xvfb)
         assert code == 2 and pattern in log and not os.path.exists(shot), f"{name}: exit {code}: {log}"
         print(f"refused ({name}): {log.strip().splitlines()[-1]}")
+
+
+def grey_rows(png):
+    """Rows of the grey tool's pixels (equal channels, well away from the background's grey and the colour map)."""
+    rgb = image.imread(png)[:, :, :3]
+    grey = (np.abs(rgb - rgb.mean(axis=2, keepdims=True)).max(axis=2) < 0.02) & (np.abs(rgb - BACKGROUND).max(
+        axis=2) > 0.1) & (rgb.mean(axis=2) > 0.25)
+    grey[:, :460] = False  # the panel
+    return np.nonzero(grey)[0]
+
+
+def check_press(hooke, meshes, out):
+    """The acceptance's press: a 5 mm sphere from 0.5 mm above the top of cylinder.msh to 3 mm into it (E 14 630 Pa,
+    nu 0.45, the default model and integrator), held; the stats give the contact force, no node is inside the
+    sphere, and the screenshots show it lower in the body."""
+    mesh = os.path.join(meshes, "cylinder.msh")
+    script = ("0 tool sphere:0.005 0 0 0.0255\n"
+              f"0 screenshot {out}/before.png\n"
+              "0.01 move-tool 0 0 0.022 over 0.2\n"
+              f"0.8 screenshot {out}/press.png\n"
+              "0.8 quit\n")
+    stats = f"{out}/press.json"
+    view_ok(hooke, mesh, out, "press", script, "--young", "14630", "--poisson", "0.45", "--damping-mass", "40",
+            "--stats", stats)
+    s = json.load(open(stats))
+    print(f"press: contact force {s['tool_force_z']:.6g} N up ({s['tool_force_n']:.6g} N), {s['tool_contact_nodes']:.0f} "
+          f"nodes in contact, smallest gap {1e6 * s['tool_smallest_gap_m']:.3g} um (contact distance "
+          f"{1e6 * s['tool_contact_distance_m']:.3g} um), {s['not_converged']} of {s['steps']} steps above the "
+          f"tolerance, step {s['step_ms_median']:.3g} ms median")
+    assert s["error"] == "", s
+    assert s["tool_force_z"] > 0.05 and s["tool_contact_nodes"] >= 1, s
+    assert 0.0 < s["tool_smallest_gap_m"] < s["tool_contact_distance_m"], s
+    assert abs(s["tool_z"] - 0.022) < 1e-12, s
+    assert s["not_converged"] < 0.05 * s["steps"], s
+    before, after = grey_rows(f"{out}/before.png"), grey_rows(f"{out}/press.png")
+    print(f"press: the sphere's lowest visible row {before.max()} before, {after.max()} pressed")
+    assert len(before) > 500 and len(after) > 500
+    assert after.min() > before.min() + 20, (before.min(), after.min())  # its top moved down with it
 
 
 def main():

@@ -140,8 +140,8 @@ RowMatXi ContactBlock::element_nodes() const {
   return out;
 }
 
-void ContactBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter,
-                                      double* values, bool project_psd) const {
+template <class F>
+void ContactBlock::for_each_node_hessian(const Eigen::Ref<const VecX>& x, bool project_psd, F&& f) const {
   for_each_touching(x, [&](std::size_t k, const SurfaceDistance& s, const Barrier& b) {
     if (!(s.distance > 0.0)) return;
     const double kappa = m_stiffness(static_cast<Eigen::Index>(k));
@@ -149,17 +149,27 @@ void ContactBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const mod
     // projection keeps the first part and drops the second, which is negative semi-definite.
     Mat3 h = kappa * b.curvature * s.normal * s.normal.transpose();
     if (!project_psd) h += kappa * b.slope * s.curvature;
-    scatter.add<3, 1>(static_cast<int>(k), h, values);
+    f(static_cast<int>(k), h);
   });
   // friction: mu lambda T (f1' u u^T / |u|^2 + f1 / |u| (I - u u^T / |u|^2)) T^T, positive semi-definite as is
   const double eps = m_friction->friction.slip;
-  for_each_slipping(x, [&](const Lagged& l, const Eigen::Vector2d& slip, const FrictionSmoothing& f) {
+  for_each_slipping(x, [&](const Lagged& l, const Eigen::Vector2d& slip, const FrictionSmoothing& fs) {
     const double y = slip.norm(), across = slope_over_slip(y, eps);
     Eigen::Matrix2d hu = across * Eigen::Matrix2d::Identity();
-    if (y > 0.0) hu += (f.curvature - across) * slip * slip.transpose() / (y * y);
-    const Mat3 h = l.limit * l.tangent * hu * l.tangent.transpose();
-    scatter.add<3, 1>(l.k, h, values);
+    if (y > 0.0) hu += (fs.curvature - across) * slip * slip.transpose() / (y * y);
+    f(l.k, Mat3(l.limit * l.tangent * hu * l.tangent.transpose()));
   });
+}
+
+void ContactBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const model::HessianScatter& scatter,
+                                      double* values, bool project_psd) const {
+  for_each_node_hessian(x, project_psd, [&](int k, const Mat3& h) { scatter.add<3, 1>(k, h, values); });
+}
+
+bool ContactBlock::add_node_stiffness(const Eigen::Ref<const VecX>& x, std::vector<std::pair<int, Mat3>>& out) const {
+  for_each_node_hessian(x, true,
+                        [&](int k, const Mat3& h) { out.emplace_back(m_nodes[static_cast<std::size_t>(k)], h); });
+  return true;
 }
 
 template <class F>

@@ -59,6 +59,8 @@ class ContactBlock final : public model::TermBlock {
   int sticking_count() const { return static_cast<int>(m_friction->lagged.size()); }
   /// lag(x): a solve::Simulator lags the friction with the state each step starts from.
   void end_step(const Eigen::Ref<const VecX>& x) const override { lag(x); }
+  /// The barrier's and the friction's Hessian per touching node, projected (what add_hessian_values adds).
+  bool add_node_stiffness(const Eigen::Ref<const VecX>& x, std::vector<std::pair<int, Mat3>>& out) const override;
   std::string_view name() const override { return "contact"; }
   double energy(const Eigen::Ref<const VecX>& x) const override;
   void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const override;
@@ -107,6 +109,9 @@ class ContactBlock final : public model::TermBlock {
     Friction friction;
     std::vector<Lagged> lagged;
   };
+  /// Calls f(k, 3 x 3 Hessian block) for every node m_nodes[k] with a barrier or friction Hessian at x.
+  template <class F>
+  void for_each_node_hessian(const Eigen::Ref<const VecX>& x, bool project_psd, F&& f) const;
   /// Calls f(point on the tool (m), force on the tool there (N)) for every contact and friction force at x.
   template <class F>
   void for_each_force_on_tool(const Eigen::Ref<const VecX>& x, F&& f) const;

@@ -28,6 +28,13 @@ void Model::end_step(const Eigen::Ref<const VecX>& x) const {
   for (const auto& b : m_blocks) b->end_step(x);
 }
 
+bool Model::node_stiffness(const Eigen::Ref<const VecX>& x, std::vector<std::pair<int, Mat3>>& out) const {
+  out.clear();
+  bool any = false;
+  for (const auto& b : m_blocks) any = b->add_node_stiffness(x, out) || any;
+  return any;
+}
+
 double Model::energy(const Eigen::Ref<const VecX>& x) const {
   double e = 0.0;
   for (const auto& b : m_blocks) e += b->energy(x);

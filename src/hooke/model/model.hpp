@@ -33,6 +33,8 @@ class Model {
   double energy(const Eigen::Ref<const VecX>& x) const;
   /// TermBlock::end_step of every block with the positions x (m) a time step starts from.
   void end_step(const Eigen::Ref<const VecX>& x) const;
+  /// TermBlock::add_node_stiffness of every block into `out` (cleared first); true when a block has such terms.
+  bool node_stiffness(const Eigen::Ref<const VecX>& x, std::vector<std::pair<int, Mat3>>& out) const;
   /// dE/dx at x, N (the blocks' forces: for non-conservative blocks not a gradient). With an interaction,
   /// blocks that follow one (TermBlock::follows_interaction) evaluate under it.
   VecX gradient(const Eigen::Ref<const VecX>& x, const Interaction* interaction = nullptr) const;

@@ -5,6 +5,7 @@
 #include <hooke/model/hessian_scatter.hpp>
 #include <hooke/model/interaction.hpp>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace hooke::model {
@@ -47,6 +48,15 @@ class TermBlock {
   /// energy depends on the state a step starts from (lagged friction: contact::ContactBlock::lag). A block keeps that
   /// history in state shared with its copies, like a tool's pose; default nothing. Not thread-safe with evaluations.
   virtual void end_step(const Eigen::Ref<const VecX>& x) const { (void)x; }
+  /// For a block whose stiffness appears and vanishes with the state on a few nodes of a 3D body (contact): appends
+  /// (node, its 3 x 3 positive semi-definite Hessian block at x, N/m) for every node where that block is not zero
+  /// and returns true. The quasi-Newton path adds them to its initial Hessian, which the rest Hessian alone would
+  /// leave without them (docs/contact.md). Default false: nothing appended.
+  virtual bool add_node_stiffness(const Eigen::Ref<const VecX>& x, std::vector<std::pair<int, Mat3>>& out) const {
+    (void)x;
+    (void)out;
+    return false;
+  }
   /// Stored elastic energy at x, J. +infinity where x is outside the block's domain (an inverted element).
   virtual double energy(const Eigen::Ref<const VecX>& x) const = 0;
   /// Adds dE/dx at x (N) to `gradient` (same size as x).

@@ -11,7 +11,15 @@
 // - Nodes grabbed by a probe are held without a new factorisation: for the c DOFs E fixed since H0 was factorised,
 //   the constrained solve is z = H0^-1 r - W C^-1 (H0^-1 r)_E with W = H0^-1 E and C = E^T W (a capacitance
 //   correction, c solves at the grab), so grabbing costs no refactorisation in a haptic loop.
+// - Contact (a barrier against a tool or an obstacle) is stiff where it acts and absent at rest, so H0 alone
+//   leaves the L-BFGS steps at their budget there. Its per-node Hessian blocks C at the step's start
+//   (TermBlock::add_node_stiffness) are added to H0 by Woodbury's identity on those nodes U:
+//   (H0 + U C U^T)^-1 = H0^-1 - W C (I + G C)^-1 U^T H0^-1, W = H0^-1 U, G = U^T W. A node's columns of W cost one
+//   solve (three without the Kronecker form) when it first touches and are kept while it stays in the set, so a
+//   press costs no refactorisation either (docs/contact.md).
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/core/sparse_cholesky.hpp>
@@ -26,6 +34,9 @@ namespace {
 // Beyond this many DOFs held since the factorisation, H0 is refactorised instead of corrected: the correction
 // costs c x DOFs per solve.
 constexpr int kMaxCorrectedDofs = 96;
+// Contact nodes whose stiffness the initial Hessian carries at most (those with the stiffest blocks beyond it): the
+// correction costs 3 x nodes x DOFs per solve.
+constexpr int kMaxContactNodes = 48;
 
 class QuasiNewtonStep final : public IntegratorStep {
  public:
@@ -58,6 +69,7 @@ class QuasiNewtonStep final : public IntegratorStep {
       hold_new_dofs();
     }
     m_refix = false;
+    update_contact(s);
     m_objective.begin(1.0 / (dt * dt), dt);
     m_y = m_objective.inertial_target();
     m_phi = m_objective.value_and_gradient(m_y, m_grad);
@@ -249,6 +261,7 @@ class QuasiNewtonStep final : public IntegratorStep {
         m_factor_fixed = fixed;
         m_held.clear();
         m_pairs = 0;
+        m_contact_nodes.clear();  // their columns of W were solved with the old factor
         return;
       }
     }
@@ -279,10 +292,109 @@ class QuasiNewtonStep final : public IntegratorStep {
       for (Eigen::Index j = 0; j < c; ++j) cap(k, j) = m_w(held[static_cast<size_t>(k)], j);
     m_capacitance.compute(cap);
     m_lambda.setZero(c, r);
+    m_contact_nodes.clear();  // their columns of W were solved without these held DOFs
   }
 
-  // z = H0^-1 z on the current free DOFs, in place.
+  // The contact stiffness at the step's start (s.x) into the Woodbury correction: new nodes' columns of W solved,
+  // C and the small matrix I + G C formed. Nothing when no block has node stiffness.
+  void update_contact(const SimulationState& s) {
+    m_contact_active = false;
+    if (!s.model().node_stiffness(s.x, m_node_stiffness) && m_contact_nodes.empty()) return;
+    const int d = s.model().dim();
+    if (d != 3) return;
+    // Per node: the sum of the blocks' 3 x 3 matrices, fixed nodes left out; the stiffest kMaxContactNodes kept.
+    m_merged.clear();
+    for (const auto& [node, h] : m_node_stiffness) {
+      if (s.fixed(3 * node)) continue;
+      auto it = std::find_if(m_merged.begin(), m_merged.end(), [&](const auto& e) { return e.first == node; });
+      if (it == m_merged.end())
+        m_merged.emplace_back(node, h);
+      else
+        it->second += h;
+    }
+    if (static_cast<int>(m_merged.size()) > kMaxContactNodes) {
+      std::nth_element(m_merged.begin(), m_merged.begin() + kMaxContactNodes, m_merged.end(),
+                       [](const auto& a, const auto& b) { return a.second.trace() > b.second.trace(); });
+      m_merged.resize(kMaxContactNodes);
+    }
+    // Nodes that left the set keep their columns (C = 0 there) unless the set would outgrow its bound.
+    std::size_t kept = m_contact_nodes.size();
+    for (const auto& [node, h] : m_merged)
+      if (std::find(m_contact_nodes.begin(), m_contact_nodes.end(), node) == m_contact_nodes.end()) ++kept;
+    if (static_cast<int>(kept) > kMaxContactNodes) m_contact_nodes.clear();
+    for (const auto& [node, h] : m_merged)
+      if (std::find(m_contact_nodes.begin(), m_contact_nodes.end(), node) == m_contact_nodes.end())
+        add_contact_columns(node);
+    const auto k = static_cast<Eigen::Index>(m_contact_nodes.size());
+    if (k == 0) return;
+    MatX c = MatX::Zero(3 * k, 3 * k);
+    for (const auto& [node, h] : m_merged) {
+      const auto j = std::find(m_contact_nodes.begin(), m_contact_nodes.end(), node) - m_contact_nodes.begin();
+      c.block<3, 3>(3 * j, 3 * j) = h;
+    }
+    if (c.isZero(0.0)) return;
+    MatX g(3 * k, 3 * k);  // U^T W
+    for (Eigen::Index j = 0; j < 3 * k; ++j)
+      for (Eigen::Index l = 0; l < 3 * k; ++l) g(j, l) = contact_column_entry(l, 3 * m_contact_nodes[j / 3] + j % 3);
+    m_contact_c = std::move(c);
+    m_contact_solver.compute(MatX::Identity(3 * k, 3 * k) + g * m_contact_c);
+    m_contact_active = true;
+  }
+
+  // W's columns for `node`: H0^-1 e for its three DOFs (one solve of the Kronecker form's per-node matrix, three
+  // otherwise).
+  void add_contact_columns(int node) {
+    const auto k = static_cast<Eigen::Index>(m_contact_nodes.size());
+    if (m_components == 3) {
+      m_contact_w.conservativeResize(m_s.nd / 3, k + 1);
+      m_q.setZero();
+      m_q.segment<3>(3 * node).setOnes();
+      apply_h0_inverse_held(m_q);
+      for (Eigen::Index u = 0; u < m_s.nd / 3; ++u) m_contact_w(u, k) = m_q(3 * u);
+    } else {
+      m_contact_w.conservativeResize(m_s.nd, 3 * (k + 1));
+      for (int a = 0; a < 3; ++a) {
+        m_q.setZero();
+        m_q(3 * node + a) = 1.0;
+        apply_h0_inverse_held(m_q);
+        m_contact_w.col(3 * k + a) = m_q;
+      }
+    }
+    m_contact_nodes.push_back(node);
+  }
+
+  // Entry `row` (a DOF) of W's column l (3 per contact node).
+  double contact_column_entry(Eigen::Index l, Eigen::Index row) const {
+    if (m_components == 3) return row % 3 == l % 3 ? m_contact_w(row / 3, l / 3) : 0.0;
+    return m_contact_w(row, l);
+  }
+
+  // z = H0^-1 z on the current free DOFs, in place, with the contact correction.
   void apply_h0_inverse(VecX& z) {
+    apply_h0_inverse_held(z);
+    if (!m_contact_active) return;
+    const auto k = static_cast<Eigen::Index>(m_contact_nodes.size());
+    m_contact_t.resize(3 * k);
+    for (Eigen::Index j = 0; j < 3 * k; ++j)
+      m_contact_t(j) = z(3 * m_contact_nodes[static_cast<size_t>(j / 3)] + j % 3);
+    m_contact_t = m_contact_c * m_contact_solver.solve(m_contact_t).eval();  // C (I + G C)^-1 U^T z
+    if (m_components == 3) {
+      for (Eigen::Index j = 0; j < k; ++j) {
+        const double* w = m_contact_w.col(j).data();
+        const double t0 = m_contact_t(3 * j), t1 = m_contact_t(3 * j + 1), t2 = m_contact_t(3 * j + 2);
+        for (Eigen::Index u = 0; u < m_contact_w.rows(); ++u) {
+          z(3 * u) -= w[u] * t0;
+          z(3 * u + 1) -= w[u] * t1;
+          z(3 * u + 2) -= w[u] * t2;
+        }
+      }
+    } else {
+      z.noalias() -= m_contact_w * m_contact_t;
+    }
+  }
+
+  // z = H0^-1 z on the current free DOFs, in place (the factor and the held DOFs' correction).
+  void apply_h0_inverse_held(VecX& z) {
     const int r = m_components;
     m_factor.solve_in_place(z.data(), r);
     if (m_held.empty()) return;
@@ -348,7 +460,15 @@ class QuasiNewtonStep final : public IntegratorStep {
   MatX m_w;                        // H0^-1 E, unknowns x c
   Eigen::LLT<MatX> m_capacitance;  // of C = E^T H0^-1 E
   MatX m_lambda;                   // c x components
-  MatX m_s_hist, m_y_hist;         // DOFs x history, a ring
+  // The contact correction: its nodes, W's columns (Kronecker form: one per node, per-node unknowns; else three per
+  // node, DOFs), C's blocks, the LU of I + G C, whether it applies this step, and scratch.
+  std::vector<int> m_contact_nodes;
+  MatX m_contact_w, m_contact_c;
+  Eigen::PartialPivLU<MatX> m_contact_solver;
+  bool m_contact_active = false;
+  VecX m_contact_t;
+  std::vector<std::pair<int, Mat3>> m_node_stiffness, m_merged;
+  MatX m_s_hist, m_y_hist;  // DOFs x history, a ring
   VecX m_rho, m_alpha;
   int m_pairs = 0, m_newest = -1;
   VecX m_y, m_trial, m_grad, m_grad_trial, m_dir, m_q, m_jump;
