@@ -1,5 +1,6 @@
 // hooke compare (MESH --young PA --poisson NU --method NAME | --model MODEL.json) --load CASE
-// (--traction PA | --strain S) [-o DIR]: a calibrated model against the FEM reference on one load case.
+// (--traction PA | --strain S) [-o DIR]: a calibrated model against the FEM reference on one load case; with
+// --tool SHAPE --press F, under the same contact instead: the tool pressed into the top to F x the height.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -8,6 +9,7 @@
 #include <hooke/core/output_transaction.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/experiments/compare.hpp>
+#include <hooke/experiments/contact_comparison.hpp>
 #include <hooke/experiments/figure.hpp>
 #include <hooke/io/vtu.hpp>
 #include <memory>
@@ -25,7 +27,45 @@ struct CompareCli {
   int layers = 4;
   bool no_figure = false;
   double traction = std::nan(""), strain = std::nan("");
+  std::string tool;  ///< --tool: compare under contact
+  double press = 0.2, contact_distance = 0.0;
+  int press_steps = 8;
 };
+
+// --tool: the tool, centred over the top face's centre and touching it, pressed down to press x height; a row per
+// step, then refusal (exit 3) when a model has no stable equilibrium (the experiment throws SolverFailure).
+int run_contact_compare(const CompareCli& o) {
+  const calibrate::CalibratedModel model = load_model(o.in);
+  const contact::RigidTool tool = contact::parse_tool(o.tool, metres_per_unit(o.in.unit));
+  if (!(o.press > 0.0 && o.press < 1.0)) throw InvalidArgument("--press must be in (0, 1) (a fraction of the height)");
+  const RowMatX& x = model.mesh.nodes;
+  const Vec3 lo = x.colwise().minCoeff().transpose(), hi = x.colwise().maxCoeff().transpose();
+  const double height = hi.z() - lo.z();
+  experiments::ContactPressOptions co;
+  const double reach =
+      tool.shape() == contact::ToolShape::kCapsule ? tool.radius() + 0.5 * tool.length() : tool.radius();
+  co.start.position = Vec3(0.5 * (lo.x() + hi.x()), 0.5 * (lo.y() + hi.y()), hi.z() + reach);
+  co.depth = o.press * height;
+  co.steps = o.press_steps;
+  co.contact_distance = o.contact_distance;
+  co.reference = material::law_from_name(o.reference);
+  const auto rows = experiments::compare_under_contact(model, tool, co);
+  std::printf("hooke compare: %s, %s model vs %s FEM under %s pressed into the top to %.4g %% of the height\n",
+              model.mesh.source.c_str(), model.method.c_str(), o.reference.c_str(), tool.description().c_str(),
+              100.0 * o.press);
+  std::printf("  %-10s %-12s %-12s %-11s %-11s %-9s %s\n", "depth (%)", "fem F (N)", "model F (N)", "F error",
+              "rel. L2", "contacts", "smallest gap (m)");
+  double worst_force = 0.0, worst_l2 = 0.0;
+  for (const experiments::ContactPressRow& r : rows) {
+    std::printf("  %-10.4g %-12.6g %-12.6g %-11.4g %-11.4g %3d/%-5d %.3g\n", 100.0 * r.travel / height,
+                r.fem_force.dot(-co.direction), r.model_force.dot(-co.direction), r.force_error, r.relative_l2,
+                r.fem_contacts, r.model_contacts, r.smallest_gap);
+    worst_force = std::max(worst_force, r.force_error);
+    worst_l2 = std::max(worst_l2, r.relative_l2);
+  }
+  std::printf("  worst     force error %.4g, relative L2 %.4g\n", worst_force, worst_l2);
+  return 0;
+}
 
 void print_comparison(const CompareCli& o, const calibrate::CalibratedModel& model, const experiments::Comparison& c) {
   const double to_unit = 1.0 / metres_per_unit(o.in.unit);
@@ -82,6 +122,11 @@ void write_outputs(const CompareCli& o, const calibrate::CalibratedModel& model,
 }
 
 int run_compare(const CompareCli& o) {
+  if (!o.tool.empty()) {
+    if (!std::isnan(o.traction) || !std::isnan(o.strain) || !o.out_dir.empty())
+      throw InvalidArgument("--tool compares under contact: it takes --press, not --traction, --strain or -o");
+    return run_contact_compare(o);
+  }
   if (std::isnan(o.traction) == std::isnan(o.strain))
     throw InvalidArgument("give exactly one of --traction and --strain");
   if (!std::isnan(o.strain) && !(o.strain > 0.0)) throw InvalidArgument("--strain must be > 0");
@@ -126,6 +171,18 @@ Action add_compare_command(CLI::App& app) {
   cmd->add_option("-o,--output", o->out_dir,
                   "Folder for compare.vtu (both displacement fields and the node error) and compare.png");
   cmd->add_flag("--no-figure", o->no_figure, "Write the figure spec compare.json but do not run matplotlib");
+  cmd->add_option("--tool", o->tool,
+                  "Compare under contact instead (docs/contact.md): sphere:R or capsule:R,L (in --unit), centred over "
+                  "the top and pressed into it; the force on it and the displacement field at every step");
+  cmd->add_option("--press", o->press, "With --tool: how far it presses, a fraction of the height")
+      ->capture_default_str();
+  cmd->add_option("--press-steps", o->press_steps, "With --tool: equal steps of the press")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--contact-distance", o->contact_distance,
+                  "With --tool: the barrier's activation distance, m (0: 1 % of the mean boundary edge)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   return [o] { return run_compare(*o); };
 }
 

@@ -220,3 +220,17 @@ execute_process(COMMAND ${HOOKE} bench --sizes 2k RESULT_VARIABLE rc ERROR_VARIA
 if(NOT rc EQUAL 2)
   message(FATAL_ERROR "hooke bench --sizes 2k must fail with exit code 2 (got ${rc}: ${err})")
 endif()
+# compare under contact: a sphere pressed 10 % into the top of the 87-node cylinder, the FEM beside the model; --tool
+# with a load case is refused.
+execute_process(COMMAND ${HOOKE} compare ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --method any-nu-tet
+                        --tool sphere:0.005 --press 0.1 --press-steps 2 RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                        ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "worst     force error [0-9.e-]+, relative L2 [0-9.e-]+")
+  message(FATAL_ERROR "hooke compare --tool failed: ${rc}")
+endif()
+execute_process(COMMAND ${HOOKE} compare ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --tool sphere:0.005
+                        --strain 0.1 RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "--tool compares under contact")
+  message(FATAL_ERROR "compare --tool with --strain must fail with exit code 2 (got ${rc}: ${err})")
+endif()

@@ -151,7 +151,9 @@ struct LoadStepper {
     const NewtonReport r = newton.solve(objective, x, &report->residual_history);
     report->iterations += r.iterations;
     report->residual = r.residual;
-    return r.converged;
+    // A state of infinite energy (an inverted element, a node inside a contact tool) is no equilibrium, whatever its
+    // gradient: the barrier's gradient is not defined there.
+    return r.converged && (!objective.conservative() || std::isfinite(objective.value(x)));
   }
 
   double residual(const VecX& x, double lambda) {

@@ -26,6 +26,8 @@ std::vector<ToolPressStep> press_quasi_statically(const model::Problem& problem,
       throw SolverFailure(where + r.report.message);
     }
     x = r.positions;
+    if (!(block.smallest_distance(x) > 0.0))  // never reported as an equilibrium (static_equilibrium refuses it too)
+      throw SolverFailure("press: the equilibrium at pose " + std::to_string(k + 1) + " has a node inside the tool");
     ToolPressStep step;
     step.pose = poses[k];
     step.tool_force = block.tool_force(x);
