@@ -61,7 +61,13 @@ struct HookeCylinder {
     problem = model::make_problem(calibrate::build_model(cm).model);
     model::fix_nodes(problem, model::make_load_case(cm.mesh, model::LoadKind::kStretch, 0.0).fixed_nodes);
     dynamics = {cm.masses, Vec3(0.0, 0.0, -9.81), 0.0, 0.0};
-    probe = {experiments::benchmark_probe_nodes(cm.mesh), 2e-3, 0.5 * (kSteps + 1) * kDt};
+    probe = {experiments::benchmark_probe_nodes(cm.mesh),
+             2e-3,
+             0.5 * (kSteps + 1) * kDt,
+             Vec3::UnitX(),
+             nullptr,
+             nullptr,
+             Vec3::Zero()};
   }
   /// hooke's simulator of this model with `integrator`'s default options.
   solve::Simulator simulator(solve::Integrator integrator) const {

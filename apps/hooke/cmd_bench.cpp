@@ -87,7 +87,10 @@ int run_bench(const BenchCli& o) {
   const experiments::DynamicsBenchmarkReport report = experiments::run_dynamics_benchmark(options);
   const std::string markdown = experiments::dynamics_benchmark_markdown(report);
   char load[96];
-  if (options.press > 0.0)
+  if (options.tool_radius > 0.0)
+    std::snprintf(load, sizeof load, "a %g mm sphere pressed into the top %g %% of the height",
+                  1e3 * options.tool_radius, 100.0 * options.tool_press);
+  else if (options.press > 0.0)
     std::snprintf(load, sizeof load, "the top pressed %g %% of the height", 100.0 * options.press);
   else
     std::snprintf(load, sizeof load, "the top's centre dragged %g mm", 1e3 * options.drag);
@@ -141,6 +144,13 @@ Action add_bench_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--press", o->options.press,
                   "Instead of the drag, press the whole top down by this fraction of the height (e.g. 0.3)")
+      ->capture_default_str();
+  cmd->add_option("--tool", o->options.tool_radius,
+                  "Instead of the drag, a rigid sphere of this radius (m) pressed into the top's centre through the "
+                  "contact barrier (docs/contact.md), by --tool-press x the height")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--tool-press", o->options.tool_press, "With --tool: how far it presses, a fraction of the height")
+      ->check(CLI::Range(0.0, 0.9))
       ->capture_default_str();
   add_settings(cmd, settings::describe(calibrate::model_settings(), settings::kBench), o->model);
   cmd->add_option("--integrators", o->options.integrators,

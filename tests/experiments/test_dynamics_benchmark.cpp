@@ -82,3 +82,28 @@ INSTANTIATE_TEST_SUITE_P(Integrators, BenchmarkCylinderUnderGravity,
 
 }  // namespace
 }  // namespace hooke::experiments
+
+namespace hooke::experiments {
+namespace {
+
+// The benchmark's tool press: a 5 mm sphere pressed 10 % into the 1 089-node cylinder, the quasi-Newton row against
+// the converged implicit Euler reference, by positions and by the force on the sphere.
+TEST(DynamicsBenchmark, ASpherePressedIntoTheCylinderMatchesTheConvergedReference) {
+  DynamicsBenchmarkOptions o;
+  o.sizes = {0};
+  o.methods = {"any-nu-tet"};
+  o.tool_radius = 0.005;
+  o.tool_press = 0.1;
+  o.steps = 40;
+  o.integrators = {"quasi-newton (rest)"};
+  const DynamicsBenchmarkReport r = run_dynamics_benchmark(o);
+  ASSERT_EQ(r.steps.size(), 1u) << (r.notes.empty() ? "" : r.notes[0]);
+  const StepTiming& t = r.steps[0];
+  EXPECT_GT(t.reference_tool_force, 0.05);
+  EXPECT_LT(std::abs(t.tool_force - t.reference_tool_force), 0.01 * t.reference_tool_force);
+  EXPECT_LT(t.error_vs_converged, 1e-2);
+  EXPECT_NE(dynamics_benchmark_markdown(r).find("The force on the pressing sphere"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace hooke::experiments

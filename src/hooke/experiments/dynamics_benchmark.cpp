@@ -9,6 +9,7 @@
 #include <hooke/mesh/generators.hpp>
 #include <hooke/model/load_case.hpp>
 #include <hooke/solve/simulator.hpp>
+#include <hooke/solve/tool_press.hpp>
 #include <hooke/springs/spring_block.hpp>
 #include <memory>
 #include <sstream>
@@ -166,6 +167,10 @@ SpringThroughput spring_throughput(const calibrate::CalibratedModel& cm, double 
 double BenchmarkDrag::offset(double t) const { return distance * std::min(1.0, t / ramp_s); }
 
 void BenchmarkDrag::before_step(solve::Simulator& sim, double dt) const {
+  if (tool) {
+    solve::move_tool(sim, *contact, *tool, {tool_start + offset(sim.time() + dt) * direction, Mat3::Identity()});
+    return;
+  }
   if (nodes.empty()) return;
   solve::Probe p;
   p.nodes = nodes;
@@ -214,16 +219,30 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
       const int nodes = cm.mesh.node_count();
       if (first_method) report.springs.push_back(spring_throughput(cm, triad));
       first_method = false;
-      model::Problem problem = model::make_problem(calibrate::build_model(cm).model);
+      const calibrate::BuiltModel built = calibrate::build_model(cm);
       const model::LoadCase supports = model::make_load_case(cm.mesh, model::LoadKind::kStretch, 0.0);
-      model::fix_nodes(problem, supports.fixed_nodes);
-      const solve::Dynamics dynamics{cm.masses, Vec3(0.0, 0.0, -9.81), 0.0, 0.0};
       BenchmarkDrag drag;
       const double ramp = 0.5 * (options.steps + 1) * options.dt;
-      if (options.press > 0.0)
-        drag = {supports.top_nodes, options.press * supports.height, ramp, -Vec3::UnitZ()};
-      else if (options.drag != 0.0)
-        drag = {benchmark_probe_nodes(cm.mesh), options.drag, ramp};
+      if (options.tool_radius > 0.0) {  // a sphere touching the top's centre, pressed down
+        const double top = cm.mesh.nodes.col(2).maxCoeff();
+        drag.tool = std::make_shared<contact::RigidTool>(contact::ToolShape::kSphere, options.tool_radius);
+        drag.tool_start = Vec3(0.0, 0.0, top + options.tool_radius);
+        drag.tool->set_pose({drag.tool_start, Mat3::Identity()});
+        auto block = contact::boundary_contact(cm.mesh, cm.material.youngs_modulus, drag.tool);
+        drag.contact = block.get();
+        built.model->add(std::move(block));
+        drag.distance = options.tool_press * supports.height;
+        drag.ramp_s = ramp;
+        drag.direction = -Vec3::UnitZ();
+      }
+      model::Problem problem = model::make_problem(built.model);
+      model::fix_nodes(problem, supports.fixed_nodes);
+      const solve::Dynamics dynamics{cm.masses, Vec3(0.0, 0.0, -9.81), 0.0, 0.0};
+      if (!drag.tool && options.press > 0.0)
+        drag = {supports.top_nodes, options.press * supports.height, ramp, -Vec3::UnitZ(), nullptr, nullptr,
+                Vec3::Zero()};
+      else if (!drag.tool && options.drag != 0.0)
+        drag = {benchmark_probe_nodes(cm.mesh), options.drag, ramp, Vec3::UnitX(), nullptr, nullptr, Vec3::Zero()};
       VecX reference;
       for (const Run& run : kRuns) {
         if (!options.integrators.empty() &&
@@ -267,9 +286,15 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
         t.nodes = nodes;
         t.method = method;
         if (!is_explicit(run.integrator) && run.integrator != solve::Integrator::kQuasiStatic && size < 2) {
+          if (drag.tool) t.tool_force = drag.contact->tool_force(sim->positions()).dot(-drag.direction);
           if (reference.size() == 0)
             reference = converged_reference(problem, dynamics, options.dt, options.steps, drag);
           t.error_vs_converged = relative_error(sim->positions(), reference, problem.model->rest_positions());
+          if (drag.tool) {
+            drag.tool->set_pose(
+                {drag.tool_start + drag.offset((options.steps + 1) * options.dt) * drag.direction, Mat3::Identity()});
+            t.reference_tool_force = drag.contact->tool_force(reference).dot(-drag.direction);
+          }
         }
         report.steps.push_back(t);
       }
@@ -301,6 +326,20 @@ std::string dynamics_benchmark_markdown(const DynamicsBenchmarkReport& report) {
   s << "\nerror vs converged: max node distance to implicit Euler with Newton to 1e-12 after the same steps (gravity "
        "and the probe's drag), over its largest displacement (same dt; - where the integrator solves another "
        "problem).\n";
+  bool tool = false;
+  for (const auto& t : report.steps) tool = tool || t.reference_tool_force != 0.0;
+  if (tool) {
+    s << "\nThe force on the pressing sphere after the last step against the converged reference's:\n\n| nodes | model "
+         "| "
+         "integrator | force (N) | reference (N) | relative difference |\n|---|---|---|---|---|---|\n";
+    for (const auto& t : report.steps) {
+      if (t.reference_tool_force == 0.0) continue;
+      std::snprintf(line, sizeof line, "| %d | %s | %s | %.6g | %.6g | %.2g |\n", t.nodes, t.method.c_str(),
+                    t.integrator.c_str(), t.tool_force, t.reference_tool_force,
+                    std::abs(t.tool_force - t.reference_tool_force) / std::abs(t.reference_tool_force));
+      s << line;
+    }
+  }
   for (const auto& n : report.notes) s << "\n- " << n;
   if (!report.notes.empty()) s << "\n";
   return s.str();

@@ -4,6 +4,7 @@
 /// r 1 cm, h 2 cm, E 14 630 Pa, 1 000 kg/m^3, bottom clamped), models of several methods at one nu, gravity and a
 /// probe dragging the top's centre sideways; every row's error against a tightly converged implicit step.
 #include <hooke/calibrate/calibrated_model.hpp>
+#include <hooke/contact/contact_block.hpp>
 #include <hooke/core/types.hpp>
 #include <hooke/model/problem.hpp>
 #include <hooke/solve/simulator.hpp>
@@ -37,6 +38,11 @@ struct DynamicsBenchmarkOptions {
   /// > 0: instead of the drag, the whole top face pressed down by this fraction of the height (its nodes held and
   /// moved along -z, reached linearly at half the run's simulated time, then held), e.g. 0.3; default 0
   double press = 0.0;
+  /// > 0: instead, a rigid sphere of this radius (m) centred over the top, touching it, pressed into it by
+  /// `tool_press` x the height (reached linearly at half the run's simulated time, then held), with the contact
+  /// barrier of docs/contact.md on the boundary; default 0
+  double tool_radius = 0.0;
+  double tool_press = 0.1;
   /// the models' large-strain term law (calibrate::SpringModel::spring_exponent, volume_exponent), default Hookean
   double spring_exponent = 1.0;
   double volume_exponent = 1.0;
@@ -51,9 +57,15 @@ struct BenchmarkDrag {
   double distance = 0.0;           ///< m
   double ramp_s = 1.0;             ///< s, > 0
   Vec3 direction = Vec3::UnitX();  ///< unit direction of the move: +x for the drag, -z for a press
+  /// Or a rigid tool moved from `tool_start` (m) by the same offsets, against the model's contact block `contact`
+  /// (whose tool it is); `nodes` is then empty.
+  std::shared_ptr<contact::RigidTool> tool;
+  const contact::ContactBlock* contact = nullptr;
+  Vec3 tool_start = Vec3::Zero();
   /// The offset along `direction` at simulated time t (s), m.
   double offset(double t) const;
-  /// Sets `sim`'s probe to the offset at the end of its next step of dt s (nothing without nodes).
+  /// Sets `sim`'s probe (or moves the tool: solve::move_tool) to the offset at the end of its next step of dt s
+  /// (nothing without nodes or a tool).
   void before_step(solve::Simulator& sim, double dt) const;
 };
 
@@ -87,6 +99,8 @@ struct StepTiming {
   /// Max node distance to implicit Euler converged tightly (Newton to 1e-12) after the same steps, relative to its
   /// largest displacement; -1 where the integrator solves another problem (explicit steps, quasi-static).
   double error_vs_converged = -1.0;
+  /// with a tool: the force on it after the last step, N (along the press), and the converged reference's
+  double tool_force = 0.0, reference_tool_force = 0.0;
 };
 
 struct DynamicsBenchmarkReport {

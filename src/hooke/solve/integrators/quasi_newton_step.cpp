@@ -14,11 +14,12 @@
 // - Contact (a barrier against a tool or an obstacle) is stiff where it acts and absent at rest, so H0 alone
 //   leaves the L-BFGS steps at their budget there. Its per-node Hessian blocks C at the step's start
 //   (TermBlock::add_node_stiffness) are added to H0 by Woodbury's identity on those nodes U:
-//   (H0 + U C U^T)^-1 = H0^-1 - W C (I + G C)^-1 U^T H0^-1, W = H0^-1 U, G = U^T W. A node's columns of W cost one
-//   solve (three without the Kronecker form) when it first touches and are kept while it stays in the set, so a
-//   press costs no refactorisation either (docs/contact.md).
+//   with C = Z Z^T (a column per non-zero eigenvalue of each node's block: one per node for a frictionless barrier),
+//   (H0 + Z Z^T)^-1 = H0^-1 - H0^-1 Z (I + Z^T H0^-1 Z)^-1 Z^T H0^-1, H0^-1 Z from W = H0^-1 U, U the contact
+//   nodes' DOFs. A node's columns of W cost one solve (three without the Kronecker form) when it first touches and
+//   are kept while it stays in the set, so a press costs no refactorisation either (docs/contact.md).
 #include <Eigen/Cholesky>
-#include <Eigen/LU>
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <hooke/core/error.hpp>
@@ -325,20 +326,32 @@ class QuasiNewtonStep final : public IntegratorStep {
     for (const auto& [node, h] : m_merged)
       if (std::find(m_contact_nodes.begin(), m_contact_nodes.end(), node) == m_contact_nodes.end())
         add_contact_columns(node);
-    const auto k = static_cast<Eigen::Index>(m_contact_nodes.size());
-    if (k == 0) return;
-    MatX c = MatX::Zero(3 * k, 3 * k);
+    // C = Z Z^T with Z's columns sqrt(eigenvalue) x eigenvector of each node's block (one per node for a
+    // frictionless barrier, whose block is kappa b'' n n^T): the small system is m x m, m the columns.
+    m_contact_cols.clear();
     for (const auto& [node, h] : m_merged) {
-      const auto j = std::find(m_contact_nodes.begin(), m_contact_nodes.end(), node) - m_contact_nodes.begin();
-      c.block<3, 3>(3 * j, 3 * j) = h;
+      const auto j =
+          static_cast<int>(std::find(m_contact_nodes.begin(), m_contact_nodes.end(), node) - m_contact_nodes.begin());
+      const Eigen::SelfAdjointEigenSolver<Mat3> eig(h);
+      const double largest = eig.eigenvalues().maxCoeff();
+      for (int a = 0; a < 3; ++a)
+        if (largest > 0.0 && eig.eigenvalues()(a) > 1e-12 * largest)
+          m_contact_cols.push_back({j, Vec3(std::sqrt(eig.eigenvalues()(a)) * eig.eigenvectors().col(a))});
     }
-    if (c.isZero(0.0)) return;
-    MatX g(3 * k, 3 * k);  // U^T W
-    for (Eigen::Index j = 0; j < 3 * k; ++j)
-      for (Eigen::Index l = 0; l < 3 * k; ++l) g(j, l) = contact_column_entry(l, 3 * m_contact_nodes[j / 3] + j % 3);
-    m_contact_c = std::move(c);
-    m_contact_solver.compute(MatX::Identity(3 * k, 3 * k) + g * m_contact_c);
-    m_contact_active = true;
+    const auto m = static_cast<Eigen::Index>(m_contact_cols.size());
+    if (m == 0) return;
+    m_contact_m.resize(m, m);  // I + Z^T H0^-1 Z
+    for (Eigen::Index p = 0; p < m; ++p)
+      for (Eigen::Index q = 0; q <= p; ++q) {
+        const ContactColumn &a = m_contact_cols[static_cast<size_t>(p)], &b = m_contact_cols[static_cast<size_t>(q)];
+        Mat3 block;  // U_a^T H0^-1 U_b
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 3; ++c)
+            block(r, c) = contact_column_entry(3 * b.slot + c, 3 * m_contact_nodes[a.slot] + r);
+        m_contact_m(p, q) = m_contact_m(q, p) = a.v.dot(block * b.v) + (p == q ? 1.0 : 0.0);
+      }
+    m_contact_solver.compute(m_contact_m);
+    m_contact_active = m_contact_solver.info() == Eigen::Success;
   }
 
   // W's columns for `node`: H0^-1 e for its three DOFs (one solve of the Kronecker form's per-node matrix, three
@@ -369,27 +382,32 @@ class QuasiNewtonStep final : public IntegratorStep {
     return m_contact_w(row, l);
   }
 
-  // z = H0^-1 z on the current free DOFs, in place, with the contact correction.
+  // z = H0^-1 z on the current free DOFs, in place, with the contact correction: z -= H0^-1 Z (I + Z^T H0^-1 Z)^-1
+  // Z^T z, H0^-1 Z from W's columns (per node slot, the sum of its columns' vectors times their weights).
   void apply_h0_inverse(VecX& z) {
     apply_h0_inverse_held(z);
     if (!m_contact_active) return;
-    const auto k = static_cast<Eigen::Index>(m_contact_nodes.size());
-    m_contact_t.resize(3 * k);
-    for (Eigen::Index j = 0; j < 3 * k; ++j)
-      m_contact_t(j) = z(3 * m_contact_nodes[static_cast<size_t>(j / 3)] + j % 3);
-    m_contact_t = m_contact_c * m_contact_solver.solve(m_contact_t).eval();  // C (I + G C)^-1 U^T z
-    if (m_components == 3) {
-      for (Eigen::Index j = 0; j < k; ++j) {
+    const auto m = static_cast<Eigen::Index>(m_contact_cols.size());
+    m_contact_t.resize(m);
+    for (Eigen::Index p = 0; p < m; ++p) {
+      const ContactColumn& c = m_contact_cols[static_cast<size_t>(p)];
+      m_contact_t(p) = c.v.dot(z.segment<3>(3 * m_contact_nodes[static_cast<size_t>(c.slot)]));
+    }
+    m_contact_solver.solveInPlace(m_contact_t);
+    m_slot_weight.setZero(3, static_cast<Eigen::Index>(m_contact_nodes.size()));
+    for (Eigen::Index p = 0; p < m; ++p) {
+      const ContactColumn& c = m_contact_cols[static_cast<size_t>(p)];
+      m_slot_weight.col(c.slot) += m_contact_t(p) * c.v;
+    }
+    for (Eigen::Index j = 0; j < m_slot_weight.cols(); ++j) {
+      const Vec3 a = m_slot_weight.col(j);
+      if (a.isZero(0.0)) continue;
+      if (m_components == 3) {
         const double* w = m_contact_w.col(j).data();
-        const double t0 = m_contact_t(3 * j), t1 = m_contact_t(3 * j + 1), t2 = m_contact_t(3 * j + 2);
-        for (Eigen::Index u = 0; u < m_contact_w.rows(); ++u) {
-          z(3 * u) -= w[u] * t0;
-          z(3 * u + 1) -= w[u] * t1;
-          z(3 * u + 2) -= w[u] * t2;
-        }
+        for (Eigen::Index u = 0; u < m_contact_w.rows(); ++u) z.segment<3>(3 * u) -= w[u] * a;
+      } else {
+        z.noalias() -= m_contact_w.middleCols<3>(3 * j) * a;
       }
-    } else {
-      z.noalias() -= m_contact_w * m_contact_t;
     }
   }
 
@@ -462,9 +480,14 @@ class QuasiNewtonStep final : public IntegratorStep {
   MatX m_lambda;                   // c x components
   // The contact correction: its nodes, W's columns (Kronecker form: one per node, per-node unknowns; else three per
   // node, DOFs), C's blocks, the LU of I + G C, whether it applies this step, and scratch.
+  struct ContactColumn {
+    int slot;  // index in m_contact_nodes
+    Vec3 v;    // the column's part at that node: C's block there is the sum of v v^T over its columns
+  };
   std::vector<int> m_contact_nodes;
-  MatX m_contact_w, m_contact_c;
-  Eigen::PartialPivLU<MatX> m_contact_solver;
+  std::vector<ContactColumn> m_contact_cols;
+  MatX m_contact_w, m_contact_m, m_slot_weight;
+  Eigen::LLT<MatX> m_contact_solver;
   bool m_contact_active = false;
   VecX m_contact_t;
   std::vector<std::pair<int, Mat3>> m_node_stiffness, m_merged;
