@@ -145,7 +145,7 @@ Action add_simulate_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--creep-velocity", o->run.creep_velocity,
                   "With friction: the slip velocity below which friction acts as a stiff drag, m/s (a contact below "
-                  "the friction limit creeps slower than this; 0: 1e-3 of the body's bounding-box diagonal per s)")
+                  "the friction limit creeps slower than this; 0: 1e-2 of the body's bounding-box diagonal per s)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--every", o->run.every, "Write a frame every this many steps (default: about 100 frames)");

@@ -90,6 +90,17 @@ list(GET last 3 fz)
 if(NOT count EQUAL 41 OR NOT fz GREATER 0.01)
   message(FATAL_ERROR "tool_force.csv: ${count} lines, last fz ${fz} N")
 endif()
+# A mesh tool: the 10 mm sphere of sphere_surface.msh (its own coordinates, centred on its origin; edges rounded by
+# 1 mm) pressed 3 mm into the top along a path.
+file(WRITE ${OUT}/mesh_path.csv "t,x,y,z\n0,0,0,0.0305\n0.04,0,0,0.027\n")
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --steps 25 --dt 0.002
+                        --damping-mass 40 --integrator implicit-euler --tool mesh:${MESHES}/sphere_surface.msh,0.001
+                        --tool-path ${OUT}/mesh_path.csv -o ${OUT}/sim_mesh_tool RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                        ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "tool      mesh:[^ ]*sphere_surface.msh,0.001: force on it [-0-9.e]+, [-0-9.e]+, [0-9.e]+ N")
+  message(FATAL_ERROR "hooke simulate --tool mesh: failed: ${rc}")
+endif()
 # The free cylinder under gravity on a floor 0.5 mm below it: it lands and the summary reports the floor's load; a
 # floor through the body is refused.
 execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --integrator implicit-euler

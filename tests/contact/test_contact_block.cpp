@@ -64,6 +64,13 @@ TEST(RigidTool, ParsesAndRefusesDescriptions) {
   EXPECT_EQ(capsule.shape(), ToolShape::kCapsule);
   EXPECT_NEAR(capsule.length(), 0.03, 1e-15);
   EXPECT_EQ(parse_tool("plane").shape(), ToolShape::kHalfSpace);
+  // a mesh tool from a file read in mm (the file's 0.01 becomes 10 um), rounded by 0.5 mm
+  const RigidTool mesh = parse_tool("mesh:" + std::string(HOOKE_MESH_DATA) + "/sphere_surface.msh,0.5", 1e-3);
+  EXPECT_EQ(mesh.shape(), ToolShape::kMesh);
+  EXPECT_NEAR(mesh.triangles()->rounding(), 5e-4, 1e-15);
+  EXPECT_NEAR(mesh.signed_distance(Vec3(0.0, 0.0, 0.0)), -1e-5 - 5e-4, 1e-6);  // its centre, 10 mm deep
+  EXPECT_NE(mesh.description().find("sphere_surface.msh,0.0005"), std::string::npos) << mesh.description();
+  EXPECT_THROW(parse_tool("mesh:" + std::string(HOOKE_MESH_DATA) + "/cylinder.msh"), InvalidArgument);  // tets
   for (const char* bad : {"sphere", "sphere:-1", "sphere:x", "cube:3", "capsule:2", "capsule:1,-2"})
     EXPECT_THROW(parse_tool(bad), InvalidArgument) << bad;
   const RigidTool floor = parse_obstacle("plane:0,0,-0.01");

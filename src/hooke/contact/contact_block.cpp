@@ -199,10 +199,15 @@ Vec3 ContactBlock::tool_torque(const Eigen::Ref<const VecX>& x) const {
 
 int ContactBlock::push_out(Eigen::Ref<VecX> x, double distance) const {
   int moved = 0;
-  for (int node : m_nodes) {
+  for (std::size_t k = 0; k < m_nodes.size(); ++k) {
+    const int node = m_nodes[k];
     if (m_tool->signed_distance(x.segment<3>(3 * node)) >= distance) continue;
     const SurfaceDistance s = m_tool->distance(x.segment<3>(3 * node));
-    x.segment<3>(3 * node) = s.closest + distance * s.normal;
+    const Vec3 to = s.closest + distance * s.normal;
+    // The push is not a slip: a lagged node's friction measures from where it was put.
+    for (Lagged& l : m_friction->lagged)
+      if (l.k == static_cast<int>(k)) l.position += to - x.segment<3>(3 * node);
+    x.segment<3>(3 * node) = to;
     ++moved;
   }
   return moved;

@@ -4,6 +4,7 @@
 #include <hooke/contact/rigid_tool.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/settings.hpp>
+#include <hooke/io/mesh_io.hpp>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@ std::string_view tool_shape_name(ToolShape shape) {
     case ToolShape::kSphere: return "sphere";
     case ToolShape::kCapsule: return "capsule";
     case ToolShape::kHalfSpace: return "plane";
+    case ToolShape::kMesh: return "mesh";
   }
   return "?";
 }
@@ -29,6 +31,11 @@ RigidTool::RigidTool(ToolShape shape, double radius, double length)
   if (shape == ToolShape::kHalfSpace) m_radius = 0.0;
 }
 
+RigidTool::RigidTool(std::shared_ptr<const TriangleShape> shape)
+    : m_shape(ToolShape::kMesh), m_radius(0.0), m_length(0.0), m_triangles(std::move(shape)) {
+  if (!m_triangles) throw InvalidArgument("a mesh tool needs a triangle surface");
+}
+
 void RigidTool::set_pose(const Pose& pose) {
   if (!pose.position.allFinite()) throw InvalidArgument("a tool's position must be finite");
   if (!pose.rotation.allFinite() || (pose.rotation.transpose() * pose.rotation - Mat3::Identity()).norm() > 1e-9 ||
@@ -38,6 +45,14 @@ void RigidTool::set_pose(const Pose& pose) {
 }
 
 SurfaceDistance RigidTool::distance(const Vec3& point) const {
+  if (m_shape == ToolShape::kMesh) {  // in the shape's frame, then back
+    const Mat3& r = m_pose.rotation;
+    SurfaceDistance s = m_triangles->distance(r.transpose() * (point - m_pose.position));
+    s.normal = r * s.normal;
+    s.curvature = r * s.curvature * r.transpose();
+    s.closest = r * s.closest + m_pose.position;
+    return s;
+  }
   SurfaceDistance out;
   const Vec3 axis = m_pose.rotation.col(2);
   if (m_shape == ToolShape::kHalfSpace) {
@@ -67,6 +82,8 @@ SurfaceDistance RigidTool::distance(const Vec3& point) const {
 }
 
 double RigidTool::signed_distance(const Vec3& point) const {
+  if (m_shape == ToolShape::kMesh)
+    return m_triangles->signed_distance(m_pose.rotation.transpose() * (point - m_pose.position));
   const Vec3 axis = m_pose.rotation.col(2);
   if (m_shape == ToolShape::kHalfSpace) return axis.dot(point - m_pose.position);
   const Vec3 start = m_pose.position - 0.5 * m_length * axis;
@@ -76,22 +93,37 @@ double RigidTool::signed_distance(const Vec3& point) const {
 
 std::string RigidTool::description() const {
   char text[96];
-  if (m_shape == ToolShape::kSphere)
-    std::snprintf(text, sizeof text, "sphere:%g", m_radius);
-  else if (m_shape == ToolShape::kCapsule)
-    std::snprintf(text, sizeof text, "capsule:%g,%g", m_radius, m_length);
-  else
-    std::snprintf(text, sizeof text, "plane");
+  switch (m_shape) {
+    case ToolShape::kSphere: std::snprintf(text, sizeof text, "sphere:%g", m_radius); break;
+    case ToolShape::kCapsule: std::snprintf(text, sizeof text, "capsule:%g,%g", m_radius, m_length); break;
+    case ToolShape::kHalfSpace: std::snprintf(text, sizeof text, "plane"); break;
+    case ToolShape::kMesh:
+      if (m_triangles->rounding() == 0.0) return "mesh:" + m_triangles->surface().source;
+      std::snprintf(text, sizeof text, ",%g", m_triangles->rounding());
+      return "mesh:" + m_triangles->surface().source + text;
+  }
   return text;
 }
 
 RigidTool parse_tool(std::string_view text, double metres_per_unit) {
-  const std::string forms = " (use sphere:R, capsule:R,L or plane; R, L in the mesh's unit)";
+  const std::string forms = " (use sphere:R, capsule:R,L, plane or mesh:FILE[,ROUNDING]; lengths in the mesh's unit)";
   const std::size_t colon = text.find(':');
   const std::string_view kind = text.substr(0, colon);
   const std::string_view sizes = colon == std::string_view::npos ? std::string_view{} : text.substr(colon + 1);
   const std::string where = "tool '" + std::string(text) + "'";
   if (kind == "plane" && sizes.empty()) return RigidTool(ToolShape::kHalfSpace);
+  if (kind == "mesh" && !sizes.empty()) {  // mesh:FILE or mesh:FILE,ROUNDING
+    const std::size_t comma = sizes.rfind(',');
+    const double rounding = comma == std::string_view::npos
+                                ? 0.0
+                                : metres_per_unit * settings::parse_number(where, sizes.substr(comma + 1));
+    io::ReadOptions o;
+    o.metres_per_unit = metres_per_unit;
+    mesh::Mesh surface = io::read_mesh(std::string(sizes.substr(0, comma)), o);
+    if (surface.kind != mesh::ElementKind::kSurfaceTriangle)
+      throw InvalidArgument(where + ": " + surface.source + " is not a triangle surface");
+    return RigidTool(std::make_shared<const TriangleShape>(std::move(surface), rounding));
+  }
   if (kind == "sphere" && !sizes.empty())
     return RigidTool(ToolShape::kSphere, metres_per_unit * settings::parse_number(where, sizes));
   if (kind == "capsule") {

@@ -1,8 +1,11 @@
 #pragma once
-/// A rigid instrument or obstacle: its shape (a sphere, a capsule, a half-space) and its pose, and the signed distance
-/// of a point to its surface with that distance's first and second derivatives (what a contact energy on the distance
-/// needs for its gradient and Hessian). docs/contact.md.
+/// A rigid instrument or obstacle: its shape (a sphere, a capsule, a half-space, a closed triangle mesh) and its pose,
+/// and the signed distance of a point to its surface with that distance's first and second derivatives (what a contact
+/// energy on the distance needs for its gradient and Hessian). docs/contact.md.
+#include <hooke/contact/surface_distance.hpp>
+#include <hooke/contact/triangle_shape.hpp>
 #include <hooke/core/types.hpp>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -14,6 +17,8 @@ enum class ToolShape {
                ///< on its position (an instrument's shaft with a round tip)
   kHalfSpace,  ///< "plane": the points below the plane through the position with the pose's local z as outward
                ///< normal (a table, a floor: an obstacle)
+  kMesh,       ///< "mesh": the solid a closed triangle surface bounds (an instrument's STL), in its own coordinates
+               ///< moved by the pose (contact::TriangleShape)
 };
 
 std::string_view tool_shape_name(ToolShape shape);
@@ -24,14 +29,6 @@ struct Pose {
   Mat3 rotation = Mat3::Identity();
 };
 
-/// A point's signed distance to a tool's surface and its derivatives in the point.
-struct SurfaceDistance {
-  double distance = 0.0;          ///< m; < 0 inside the tool
-  Vec3 normal = Vec3::Zero();     ///< d distance / d point: the unit outward normal at the closest surface point
-  Mat3 curvature = Mat3::Zero();  ///< d2 distance / d point2, 1/m (positive semi-definite for these convex shapes)
-  Vec3 closest = Vec3::Zero();    ///< the closest point on the tool's surface, m
-};
-
 class RigidTool {
  public:
   /// @param shape   the kind
@@ -39,6 +36,9 @@ class RigidTool {
   /// @param length  capsule segment length, m (>= 0; ignored otherwise)
   /// @throws InvalidArgument for a non-finite or out-of-range size
   RigidTool(ToolShape shape, double radius = 0.0, double length = 0.0);
+  /// A mesh tool: the closed triangle surface `shape` (its coordinates the tool's own, m).
+  /// @throws InvalidArgument for a null shape
+  explicit RigidTool(std::shared_ptr<const TriangleShape> shape);
 
   ToolShape shape() const { return m_shape; }
   double radius() const { return m_radius; }
@@ -54,17 +54,23 @@ class RigidTool {
   /// distance(point).distance alone, m (no derivatives: what a contact block tests every node with).
   double signed_distance(const Vec3& point) const;
 
-  /// "sphere:R", "capsule:R,L" or "plane" (radius, length in m).
+  /// "sphere:R", "capsule:R,L", "plane" (radius, length in m) or "mesh:SOURCE[,ROUNDING]".
   std::string description() const;
+  /// The mesh tool's shape (null for the others).
+  const TriangleShape* triangles() const { return m_triangles.get(); }
 
  private:
   ToolShape m_shape;
   double m_radius, m_length;
+  std::shared_ptr<const TriangleShape> m_triangles;  // kMesh
   Pose m_pose;
 };
 
-/// Parses "sphere:R", "capsule:R,L" or "plane" (R, L in metres times `metres_per_unit`).
-/// @throws InvalidArgument naming the text and the forms accepted
+/// Parses "sphere:R", "capsule:R,L", "plane" (R, L in metres times `metres_per_unit`) or "mesh:FILE[,ROUNDING]" (a
+/// closed triangle surface in any mesh format io::read_mesh reads, its coordinates and the rounding radius
+/// (TriangleShape) times `metres_per_unit`).
+/// @throws InvalidArgument naming the text and the forms accepted; what io::read_mesh and
+///   mesh::check_closed_surface throw for the file
 RigidTool parse_tool(std::string_view text, double metres_per_unit = 1.0);
 
 /// A rotation whose local z axis is `normal` (any length > 0): how a plane's outward normal or a capsule's axis is

@@ -12,6 +12,12 @@ ToolSurface tool_surface(const RigidTool& tool, int segments, double extent) {
     throw InvalidArgument("a tool's surface needs at least 8 segments, not " + std::to_string(segments));
   const Pose& pose = tool.pose();
   ToolSurface s;
+  if (tool.shape() == ToolShape::kMesh) {  // its own triangles, moved
+    const mesh::Mesh& m = tool.triangles()->surface();
+    s.nodes = ((m.nodes * pose.rotation.transpose()).rowwise() + pose.position.transpose()).eval();
+    s.triangles = m.elements;
+    return s;
+  }
   if (tool.shape() == ToolShape::kHalfSpace) {
     if (!(extent > 0.0)) throw InvalidArgument("a plane's drawn square needs an extent > 0 m");
     s.nodes.resize(4, 3);

@@ -148,7 +148,8 @@ struct LiveSimulation::Impl {
     if (tool) {
       const double friction = contact ? contact->friction().coefficient : 0.0;
       contact = contact::boundary_contact(model.mesh, model.material.youngs_modulus, tool);
-      contact->set_friction({friction, 1e-3 * mesh::bounding_box_diagonal(model.mesh) * settings.dynamics.dt});
+      contact->set_friction(
+          {friction, contact::default_creep_velocity(mesh::bounding_box_diagonal(model.mesh)) * settings.dynamics.dt});
       simulated = calibrate::build_model(model).model;
       simulated->add(std::make_unique<contact::ContactBlock>(*contact));
     }
@@ -394,7 +395,8 @@ void LiveSimulation::set_tool(const std::string& shape, const contact::Pose& pos
   auto tool = std::make_shared<contact::RigidTool>(contact::parse_tool(shape));
   tool->set_pose(pose);
   auto block = contact::boundary_contact(m->model.mesh, m->model.material.youngs_modulus, tool);
-  block->set_friction({friction, 1e-3 * mesh::bounding_box_diagonal(m->model.mesh) * m->settings.dynamics.dt});
+  block->set_friction({friction, contact::default_creep_velocity(mesh::bounding_box_diagonal(m->model.mesh)) *
+                                     m->settings.dynamics.dt});
   m->tool = std::move(tool);
   m->contact = std::move(block);
   m->tool_state.reset();

@@ -102,7 +102,7 @@ class LiveSimulation {
 
   /// Puts a rigid tool ("sphere:R", "capsule:R,L", m: contact::parse_tool) at `pose` against the body's boundary
   /// (contact::boundary_contact: the barrier's activation distance 1 % of the mean boundary edge, kappa from the
-  /// model's E), with Coulomb friction `friction` (creep velocity 1e-3 of the bounding-box diagonal per s). Replaces
+  /// model's E), with Coulomb friction `friction` (creep velocity contact::default_creep_velocity). Replaces
   /// the tool there was; kept across apply() (its stiffness follows a new E) and reset(). Nodes inside it are put
   /// back outside. Works beside a grab.
   /// @throws InvalidArgument for a malformed shape, a 2D body, a negative or non-finite friction

@@ -62,7 +62,8 @@ SimulationSummary simulate(const calibrate::CalibratedModel& file_model, const S
   VecX out_u(d * n), out_v(d * n);
   const calibrate::BuiltModel built = calibrate::build_model(cm);
   const VecX& rest = built.model->rest_positions();
-  const double creep = o.creep_velocity > 0.0 ? o.creep_velocity : 1e-3 * mesh::bounding_box_diagonal(cm.mesh);
+  const double creep =
+      o.creep_velocity > 0.0 ? o.creep_velocity : contact::default_creep_velocity(mesh::bounding_box_diagonal(cm.mesh));
   const contact::Friction friction{o.friction, creep * o.dynamics.dt};
   const contact::ContactBlock* contact = nullptr;
   if (o.tool) {  // the barrier against the tool joins the model's terms (docs/contact.md)

@@ -36,8 +36,9 @@ struct SimulationOptions {
   /// block on the boundary, frictionless; the body must start outside them.
   std::vector<contact::RigidTool> obstacles;
   /// Coulomb friction coefficient of the tool's and the obstacles' contacts (>= 0; 0: frictionless), and the creep
-  /// velocity eps_v below which friction acts as a stiff viscous drag (m/s, > 0; 0: 1e-3 of the body's bounding-box
-  /// diagonal per second): a contact below the friction limit slips slower than eps_v (docs/contact.md).
+  /// velocity eps_v below which friction acts as a stiff viscous drag (m/s, > 0; 0: contact::default_creep_velocity of
+  /// the body's bounding-box diagonal per second): a contact below the friction limit slips slower than eps_v
+  /// (docs/contact.md).
   double friction = 0.0;
   double creep_velocity = 0.0;
 };
