@@ -132,8 +132,8 @@ Action add_simulate_command(CLI::App& app) {
                   "writes DIR/tool_force.csv (t,fx,fy,fz: the force the body exerts on the tool, N)");
   cmd->add_option("--obstacle", o->obstacles,
                   "A static obstacle the body may rest on (with --friction's coefficient): plane:X,Y,Z (a floor "
-                  "through that point, m) or "
-                  "plane:X,Y,Z,NX,NY,NZ (with that outward normal); repeatable. With --free and --gravity a body "
+                  "through that point, m), plane:X,Y,Z,NX,NY,NZ (with that outward normal) or mesh:FILE[,ROUNDING] (a "
+                  "closed triangle surface where the file puts it, m); repeatable. With --free and --gravity a body "
                   "rests on it instead of being clamped");
   cmd->add_option("--contact-distance", o->run.contact_distance,
                   "The contact barrier's activation distance, m (0: 1 % of the mean boundary edge)")

@@ -111,6 +111,23 @@ if(NOT rc EQUAL 0 OR NOT out MATCHES "obstacle  plane:0,0,-0.0005: force on it [
    OR NOT out MATCHES "friction  coefficient 0.5, creep velocity")
   message(FATAL_ERROR "hooke simulate --obstacle failed: ${rc}")
 endif()
+# A mesh obstacle: a closed box (an OFF file) whose top is 0.5 mm below the free cylinder; it lands on it under gravity
+# and the box carries it. The 10 mm sphere of sphere_surface.msh, where its file puts it (at the origin), is inside
+# the body and refused.
+file(WRITE ${OUT}/table.off "OFF\n8 12 0\n-0.05 -0.05 -0.0105\n0.05 -0.05 -0.0105\n-0.05 0.05 -0.0105\n0.05 0.05 -0.0105\n-0.05 -0.05 -0.0005\n0.05 -0.05 -0.0005\n-0.05 0.05 -0.0005\n0.05 0.05 -0.0005\n3 0 2 1\n3 1 2 3\n3 4 5 6\n3 5 7 6\n3 0 1 4\n3 1 5 4\n3 2 6 3\n3 3 6 7\n3 0 4 2\n3 2 4 6\n3 1 3 5\n3 3 7 5\n")
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --integrator implicit-euler
+                        --dt 0.002 --steps 50 --damping-mass 20 --free --gravity --obstacle mesh:${OUT}/table.off
+                        -o ${OUT}/sim_mesh_floor RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "obstacle  mesh:[^ ]*table.off: force on it [-0-9.e]+, [-0-9.e]+, -[0-9.e]+ N")
+  message(FATAL_ERROR "hooke simulate --obstacle mesh: failed: ${rc}")
+endif()
+execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --steps 2 --free
+                        --obstacle mesh:${MESHES}/sphere_surface.msh -o ${OUT}/sim_mesh_inside RESULT_VARIABLE rc
+                        ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "starts inside the obstacle mesh:")
+  message(FATAL_ERROR "a mesh obstacle through the body must fail with exit code 2 (got ${rc}: ${err})")
+endif()
 execute_process(COMMAND ${HOOKE} simulate ${MESHES}/cylinder.msh --young 14630 --poisson 0.45 --steps 2 --free
                         --obstacle plane:0,0,0.01 -o ${OUT}/sim_bad_floor RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 2 OR NOT err MATCHES "starts inside the obstacle")

@@ -147,10 +147,11 @@ Mat3 rotation_to(const Vec3& normal) {
   return r;
 }
 
-RigidTool parse_obstacle(std::string_view text) {
+RigidTool parse_obstacle(std::string_view text, double metres_per_unit) {
   const std::string where = "obstacle '" + std::string(text) + "'";
+  if (text.substr(0, 5) == "mesh:") return parse_tool(text, metres_per_unit);  // where its file puts it
   if (text.substr(0, 6) != "plane:")
-    throw InvalidArgument("unknown " + where + " (use plane:X,Y,Z or plane:X,Y,Z,NX,NY,NZ, m)");
+    throw InvalidArgument("unknown " + where + " (use plane:X,Y,Z, plane:X,Y,Z,NX,NY,NZ (m) or mesh:FILE[,ROUNDING])");
   std::vector<double> v;
   std::string_view rest = text.substr(6);
   while (true) {

@@ -77,9 +77,10 @@ RigidTool parse_tool(std::string_view text, double metres_per_unit = 1.0);
 /// given. @throws InvalidArgument for a zero or non-finite vector
 Mat3 rotation_to(const Vec3& normal);
 
-/// Parses an obstacle: "plane:X,Y,Z" (a horizontal floor through that point, outward normal +z) or
-/// "plane:X,Y,Z,NX,NY,NZ" (through the point, with that outward normal); coordinates in m.
-/// @throws InvalidArgument naming the text and the forms accepted
-RigidTool parse_obstacle(std::string_view text);
+/// Parses an obstacle: "plane:X,Y,Z" (a horizontal floor through that point, outward normal +z),
+/// "plane:X,Y,Z,NX,NY,NZ" (through the point, with that outward normal; coordinates in m) or "mesh:FILE[,ROUNDING]"
+/// (a closed triangle surface where the file puts it, its coordinates and rounding times `metres_per_unit`).
+/// @throws InvalidArgument naming the text and the forms accepted; what parse_tool throws for a mesh
+RigidTool parse_obstacle(std::string_view text, double metres_per_unit = 1.0);
 
 }  // namespace hooke::contact
