@@ -30,6 +30,7 @@ from ._hooke import (  # noqa: F401
     __version__,
     certify,
     compare,
+    compare_under_contact,
     cube_surface,
     equilateral_membrane,
     fem_probe_equilibrium,

@@ -63,3 +63,18 @@ def test_friction_drags_the_surface_along_with_a_sliding_tool():
     assert lateral[0.5] < -1.5 * abs(lateral[0.0])  # the body drags on the tool against its motion (+x)
     with pytest.raises(hooke.InvalidArgument, match="friction"):
         pressed_problem(-1.0)
+
+
+def test_compare_under_contact_presses_the_model_and_the_fem_alike():
+    """A sphere pressed 1 mm into the small cylinder, any-nu-tet against the neo-Hookean FEM: both push back, the
+    forces agree within the model's error, and the field's error is reported."""
+    mesh = hooke.tet_cylinder(0.01, 0.02, 6, 4)
+    model = hooke.calibrate(mesh, hooke.Material(14630.0, 0.45), method="any-nu-tet")
+    top = mesh.points[:, 2].max()
+    rows = hooke.compare_under_contact(model, "sphere:0.005", [0.0, 0.0, top + 0.005], 2e-3, steps=2)
+    assert len(rows) == 2 and rows[-1]["travel"] == pytest.approx(2e-3)
+    for r in rows:
+        assert r["fem_force"][2] > 0.0 and r["model_force"][2] > 0.0 and r["smallest_gap"] > 0.0
+        assert 0.0 <= r["force_error"] < 0.3 and r["relative_l2"] > 0.0
+    with pytest.raises(hooke.InvalidArgument, match="depth"):
+        hooke.compare_under_contact(model, "sphere:0.005", [0.0, 0.0, top + 0.005], 0.0)

@@ -1,10 +1,13 @@
 // hooke.compare: a calibrated model against the FEM reference under one load case, both displacement fields and
-// the node errors.
+// the node errors; hooke.compare_under_contact: the same under a pressing tool, depth by depth.
+#include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 #include <bindings.hpp>
 #include <calibrate/calibrated_model.hpp>
 #include <core/arrays.hpp>
+#include <hooke/contact/rigid_tool.hpp>
 #include <hooke/experiments/compare.hpp>
+#include <hooke/experiments/contact_comparison.hpp>
 
 namespace py = pybind11;
 
@@ -68,6 +71,37 @@ void define_compare(py::module_& m) {
       "or 'shear' at mean linear-FEM `strain` or `traction` (Pa), or with control='displacement' the top moved by "
       "strain x height (the forces on it compared: force_error); the surface model against tets of `layers` "
       "layers. Returns a Comparison.");
+  m.def(
+      "compare_under_contact",
+      [](const calibrate::CalibratedModel& model, const std::string& tool, const py::object& position, double depth,
+         int steps, const std::string& reference, double contact_distance) {
+        experiments::ContactPressOptions o;
+        o.start.position = vector_argument(position, "position", 3);
+        o.depth = depth;
+        o.steps = steps;
+        o.reference = material::law_from_name(reference);
+        o.contact_distance = contact_distance;
+        const contact::RigidTool shape = contact::parse_tool(tool);
+        std::vector<experiments::ContactPressRow> rows;
+        {
+          py::gil_scoped_release release;
+          rows = experiments::compare_under_contact(model, shape, o);
+        }
+        py::list out;
+        for (const auto& r : rows)
+          out.append(py::dict(py::arg("travel") = r.travel, py::arg("fem_force") = Vec3(r.fem_force),
+                              py::arg("model_force") = Vec3(r.model_force), py::arg("force_error") = r.force_error,
+                              py::arg("relative_l2") = r.relative_l2, py::arg("fem_contacts") = r.fem_contacts,
+                              py::arg("model_contacts") = r.model_contacts, py::arg("smallest_gap") = r.smallest_gap));
+        return out;
+      },
+      py::arg("model"), py::arg("tool"), py::arg("position"), py::arg("depth"), py::arg("steps") = 8,
+      py::arg("reference") = "neohookean", py::arg("contact_distance") = 0.0,
+      "The model and the FEM of its mesh (law `reference`) with the tool 'sphere:R', 'capsule:R,L' or "
+      "'mesh:FILE[,ROUNDING]' (m) moved from `position` (3,) m down -z by `depth` m in `steps` equal steps, both "
+      "clamped at the bottom (docs/contact.md): a list of dicts per step with the travel (m), both forces on the "
+      "tool (N), the force's relative error, the displacement field's relative L2, the nodes in contact and the "
+      "smallest gap (m). SolverFailure where either has no stable equilibrium.");
 }
 
 }  // namespace hooke::python
