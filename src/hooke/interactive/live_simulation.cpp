@@ -59,6 +59,7 @@ struct LiveSimulation::Impl {
   // reported after each step.
   std::shared_ptr<contact::RigidTool> tool;
   std::shared_ptr<contact::ContactBlock> contact;
+  double tool_friction = 0.0;  // its Coulomb coefficient
   std::optional<LiveTool> tool_state;
 
   void forget_local_model() {
@@ -146,10 +147,9 @@ struct LiveSimulation::Impl {
     // E); `built`, which drawing threads share, stays the body's alone.
     std::shared_ptr<model::Model> simulated = built.model;
     if (tool) {
-      const double friction = contact ? contact->friction().coefficient : 0.0;
       contact = contact::boundary_contact(model.mesh, model.material.youngs_modulus, tool);
-      contact->set_friction(
-          {friction, contact::default_creep_velocity(mesh::bounding_box_diagonal(model.mesh)) * settings.dynamics.dt});
+      contact->set_friction({tool_friction, contact::default_creep_velocity(mesh::bounding_box_diagonal(model.mesh)) *
+                                                settings.dynamics.dt});
       simulated = calibrate::build_model(model).model;
       simulated->add(std::make_unique<contact::ContactBlock>(*contact));
     }
@@ -295,7 +295,7 @@ void LiveSimulation::apply(const LiveSettings& s) {
   next.offset = m->offset;
   next.force = m->force;
   next.tool = m->tool;
-  next.contact = m->contact;
+  next.tool_friction = m->tool_friction;
   next.tool_state = m->tool_state;
   next.model_version = m->model_version + (recalibrate ? 1 : 0);
   next.rebuild(x, v, t);
@@ -394,12 +394,9 @@ void LiveSimulation::set_tool(const std::string& shape, const contact::Pose& pos
     throw InvalidArgument("the friction coefficient must be a finite number >= 0, not " + std::to_string(friction));
   auto tool = std::make_shared<contact::RigidTool>(contact::parse_tool(shape));
   tool->set_pose(pose);
-  auto block = contact::boundary_contact(m->model.mesh, m->model.material.youngs_modulus, tool);
-  block->set_friction({friction, contact::default_creep_velocity(mesh::bounding_box_diagonal(m->model.mesh)) *
-                                     m->settings.dynamics.dt});
   m->tool = std::move(tool);
-  m->contact = std::move(block);
-  m->tool_state.reset();
+  m->tool_friction = friction;
+  m->tool_state.reset();                                         // rebuild makes its contact block
   const VecX x = m->sim->positions(), v = m->sim->velocities();  // copies: rebuild replaces the simulator
   m->rebuild(x, v, m->sim->time());
 }

@@ -297,7 +297,7 @@ class QuasiNewtonStep final : public IntegratorStep {
   }
 
   // The contact stiffness at the step's start (s.x) into the Woodbury correction: new nodes' columns of W solved,
-  // C and the small matrix I + G C formed. Nothing when no block has node stiffness.
+  // Z from C's blocks and the Cholesky of I + Z^T H0^-1 Z. Nothing when no block has node stiffness.
   void update_contact(const SimulationState& s) {
     m_contact_active = false;
     if (!s.model().node_stiffness(s.x, m_node_stiffness) && m_contact_nodes.empty()) return;
@@ -479,7 +479,7 @@ class QuasiNewtonStep final : public IntegratorStep {
   Eigen::LLT<MatX> m_capacitance;  // of C = E^T H0^-1 E
   MatX m_lambda;                   // c x components
   // The contact correction: its nodes, W's columns (Kronecker form: one per node, per-node unknowns; else three per
-  // node, DOFs), C's blocks, the LU of I + G C, whether it applies this step, and scratch.
+  // node, DOFs), Z's columns, I + Z^T H0^-1 Z and its Cholesky, whether it applies this step, and scratch.
   struct ContactColumn {
     int slot;  // index in m_contact_nodes
     Vec3 v;    // the column's part at that node: C's block there is the sum of v v^T over its columns
