@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <hooke/contact/contact_block.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/interactive/haptic_loop.hpp>
+#include <hooke/interactive/local_contact.hpp>
 #include <hooke/interactive/multirate.hpp>
 #include <iostream>
 #include <thread>
@@ -167,6 +169,73 @@ TEST(HapticLoop, RendersTheHoldingForceBesideTheDeformation) {
   const VecX felt = haptics.force();
   EXPECT_LT((felt - eq.holding_force).norm(), 0.05 * eq.holding_force.norm())
       << "felt " << felt.transpose() << ", holding " << eq.holding_force.transpose();
+}
+
+// A sphere (5 mm) pressed 3 mm into the top of the cylinder over 0.5 s, held 0.2 s: the force a 1 kHz loop renders
+// from the tool's local contact model (the nodes near the sphere, their compliance and the barrier), the body deformed
+// every 10 or 20 ms, against the same press simulated at 1 kHz throughout; and with the force held between steps.
+LiveSimulation pressed(const mesh::Mesh& m, double dt, HapticStiffness k) {
+  LiveSettings s = settings("any-nu-tet", 0.45);
+  s.dynamics.damping_mass = 20.0;
+  s.dynamics.dt = dt;
+  s.haptic_stiffness = k;
+  s.simulator.quasi_newton.tolerance = kDeformationTolerance;
+  LiveSimulation sim(m, s);
+  sim.set_tool("sphere:0.005", {Vec3(0.0, 0.0, m.nodes.col(2).maxCoeff() + 0.005 + 2e-4), Mat3::Identity()});
+  return sim;
+}
+
+TEST(Multirate, APressingToolsForceWithinFivePercentOfTheFullRatePress) {
+  const mesh::Mesh m = cylinder();
+  const DeviceDrag device{Vec3(0.0, 0.0, -1.0), 3e-3, 0.5};
+  const double duration = 0.7;
+  LiveSimulation full = pressed(m, 1e-3, HapticStiffness::kSecant);
+  const ForceTrace reference = full_rate_force(full, device, duration);
+  const double largest = reference.force.rowwise().norm().maxCoeff();
+  EXPECT_GT(reference.force.col(2).maxCoeff(), 0.05);  // the body pushes the sphere up
+  for (const double deformation_dt : {0.01, 0.02}) {
+    double errors[2];
+    for (const HapticStiffness k : {HapticStiffness::kNone, HapticStiffness::kSecant}) {
+      LiveSimulation sim = pressed(m, deformation_dt, k);
+      const ForceTrace haptic = multirate_force(sim, device, duration, 1e-3);
+      ASSERT_EQ(haptic.time.size(), reference.time.size());
+      errors[k == HapticStiffness::kNone ? 0 : 1] = relative_force_error(haptic, reference);
+    }
+    std::cout << "[multirate press] deformation every " << 1e3 * deformation_dt << " ms, haptics at 1 kHz: force off "
+              << "the full-rate press's by " << errors[1] << " of its largest (" << largest << " N) from the local "
+              << "contact model, " << errors[0] << " with the force held\n";
+    EXPECT_LT(errors[1], 0.05);
+    EXPECT_LT(errors[1], 0.5 * errors[0]);
+  }
+}
+
+// One node of compliance c (isotropic, m/N) resting at the gap d0 under a plane, which holds it down with f0 =
+// kappa |b'(d0)|, pressed s further: the node sinks by c (f - f0) while the barrier's force f = kappa |b'(d)| holds it
+// at the gap d = d0 - s + c (f - f0); that scalar equation solved by bisection is the local model's force.
+TEST(LocalContact, OneNodeUnderAPlaneBalancesItsComplianceAndTheBarrier) {
+  const double c = 1e-3, kappa = 50.0, dhat = 1e-4, d0 = 5e-5;
+  contact::RigidTool plane(contact::ToolShape::kHalfSpace);
+  plane.set_pose({Vec3(0.0, 0.0, 1.0 + d0), contact::rotation_to(Vec3(0.0, 0.0, -1.0))});  // solid above z = 1 + d0
+  const double f0 = kappa * std::abs(contact::barrier(d0, dhat).slope);
+  const LocalContact local(plane, Vec3(0.0, 0.0, 1.0), (VecX(1) << kappa).finished(), dhat, c * MatX::Identity(3, 3),
+                           Vec3(0.0, 0.0, f0));
+  // At the step's pose: the step's force.
+  EXPECT_NEAR(local.force(plane.pose()).z(), f0, 1e-12);
+  for (const double s : {2e-5, 1e-4, 3e-4}) {
+    double lo = 1e-12, hi = dhat;  // the gap d: c kappa |b'(d)| - (d - d0 + s) decreases in d
+    for (int k = 0; k < 200; ++k) {
+      const double d = 0.5 * (lo + hi);
+      (c * (kappa * std::abs(contact::barrier(d, dhat).slope) - f0) > d - d0 + s ? lo : hi) = d;
+    }
+    const double f = kappa * std::abs(contact::barrier(0.5 * (lo + hi), dhat).slope);
+    int touching = 0;
+    const Vec3 rendered = local.force({Vec3(0.0, 0.0, 1.0 + d0 - s), plane.pose().rotation}, &touching);
+    EXPECT_NEAR(rendered.z(), f, 1e-3 * f) << "pressed " << s << " m";
+    EXPECT_NEAR(rendered.head<2>().norm(), 0.0, 1e-12);
+    EXPECT_EQ(touching, 1);
+  }
+  // Lifted away: no force.
+  EXPECT_LT(local.force({Vec3(0.0, 0.0, 1.0 + 2.0 * dhat), plane.pose().rotation}).norm(), 1e-12);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <hooke/model/load_case.hpp>
 #include <hooke/model/problem.hpp>
 #include <hooke/solve/contact_stiffness.hpp>
+#include <hooke/solve/node_compliance.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
 #include <iostream>
 
@@ -181,6 +182,50 @@ TEST(ContactStiffness, RefusesWhatItCannotCondense) {
   EXPECT_THROW(contact_stiffness(b.k, b.fixed, x, 3, {b.clamped[0]}), InvalidArgument);  // fixed
   const std::vector<char> loose(b.fixed.size(), 0);
   EXPECT_THROW(contact_stiffness(b.k, loose, x, 3, {top_nodes(b.model.mesh, 1e-9)}), SolverFailure);  // not held
+}
+
+}  // namespace
+}  // namespace hooke::solve
+
+namespace hooke::solve {
+namespace {
+
+// The compliance at a few nodes against the dense inverse of K on the free DOFs, and each node's 3 x 3 block against
+// the condensed stiffness of that node alone (contact_stiffness: a Schur complement by another factorisation).
+TEST(NodeCompliance, MatchesTheDenseInverseAndTheCondensedStiffness) {
+  const Body b = body("any-nu-tet", 4, 3);
+  const Eigen::Index nd = b.k.rows();
+  std::vector<Eigen::Index> free;
+  for (Eigen::Index i = 0; i < nd; ++i)
+    if (!b.fixed[static_cast<size_t>(i)]) free.push_back(i);
+  const MatX dense = MatX(b.k)(free, free);
+  const MatX inverse = dense.llt().solve(MatX::Identity(dense.rows(), dense.rows()));
+  std::vector<Eigen::Index> where(static_cast<size_t>(nd), -1);
+  for (size_t r = 0; r < free.size(); ++r) where[static_cast<size_t>(free[r])] = static_cast<Eigen::Index>(r);
+  const int n = static_cast<int>(nd / 3);
+  const std::vector<int> nodes = {n - 1, n / 2, n - 7};
+  NodeCompliance c(b.k, b.fixed, 3);
+  const MatX block = c.block(nodes);
+  ASSERT_EQ(block.rows(), 9);
+  for (int p = 0; p < 3; ++p)
+    for (int q = 0; q < 3; ++q)
+      for (int a = 0; a < 3; ++a)
+        for (int e = 0; e < 3; ++e) {
+          const Eigen::Index i = where[static_cast<size_t>(3 * nodes[static_cast<size_t>(p)] + a)],
+                             j = where[static_cast<size_t>(3 * nodes[static_cast<size_t>(q)] + e)];
+          ASSERT_GE(i, 0);
+          ASSERT_GE(j, 0);
+          EXPECT_NEAR(block(3 * p + a, 3 * q + e), inverse(i, j), 1e-9 * inverse.norm());
+        }
+  for (int p = 0; p < 3; ++p) {
+    const MatX kc =
+        contact_stiffness(b.k, b.fixed, b.built.model->rest_positions(), 3, {nodes[static_cast<size_t>(p)]});
+    EXPECT_LT((block.block<3, 3>(3 * p, 3 * p) * kc - MatX::Identity(3, 3)).norm(), 1e-8);
+  }
+  EXPECT_EQ(c.cached_nodes(), 3);
+  EXPECT_THROW(c.block({n}), InvalidArgument);
+  // A clamped node has no compliance.
+  EXPECT_EQ(c.block({b.clamped.front()}).norm(), 0.0);
 }
 
 }  // namespace

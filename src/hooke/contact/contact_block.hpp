@@ -89,6 +89,7 @@ class ContactBlock final : public model::TermBlock {
   double smallest_distance(const Eigen::Ref<const VecX>& x) const;
 
   const std::vector<int>& nodes() const { return m_nodes; }
+  const VecX& stiffness() const { return m_stiffness; }  ///< kappa per node, N/m
   double activation() const { return m_activation; }
   const RigidTool& tool() const { return *m_tool; }
 

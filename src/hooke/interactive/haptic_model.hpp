@@ -5,6 +5,8 @@
 /// offset, u - offset) / 2.
 #include <hooke/core/error.hpp>
 #include <hooke/core/types.hpp>
+#include <hooke/interactive/local_contact.hpp>
+#include <memory>
 #include <string_view>
 
 namespace hooke::interactive {
@@ -50,10 +52,20 @@ struct HapticModel {
   /// the model is linear in the offset, when LiveSettings::haptic_curvature is off or an element of the body
   /// inverts within the difference step at the grab)
   MatX curvature;
+  /// A pressing tool's local contact model after the step (null: no tool, or a grab, which the device drives
+  /// instead). The device's offset then moves the tool from `tool_origin` (LiveSimulation::drive_tool), and
+  /// `offset` is the one the step was taken with. With HapticStiffness::kNone a tool's force is held instead
+  /// (`tool` set, `contact` null).
+  std::shared_ptr<const LocalContact> contact;
+  bool tool = false;          ///< a tool without a grab: `force` and `offset` are the tool's
+  contact::Pose tool_origin;  ///< where the device's zero puts the tool
 
-  /// The force on the probe at offset u, N (dim): zero without a grab. @pre u has dim components
+  /// The force on the probe, or on the tool, at the device's offset u, N (dim): the grab's local model, or the
+  /// tool's contact model at tool_origin + u (3D), or the held force; zero with neither grab nor tool.
+  /// @pre u has dim components
   VecX render(const VecX& u) const {
-    if (!grabbed || force.size() != u.size()) return VecX::Zero(u.size());
+    if (!grabbed && contact && u.size() == 3) return contact->force({tool_origin.position + u, tool_origin.rotation});
+    if ((!grabbed && !tool) || force.size() != u.size()) return VecX::Zero(u.size());
     const VecX d = u - offset;
     VecX f = force - stiffness * d;
     if (curvature.rows() == d.size())  // T(d, d) = sum_a d_a T_a d, T_a the a-th dim x dim block

@@ -5,8 +5,10 @@
 #include <hooke/interactive/live_simulation.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <hooke/model/load_case.hpp>
+#include <hooke/solve/node_compliance.hpp>
 #include <hooke/solve/static_equilibrium.hpp>
 #include <hooke/solve/tool_press.hpp>
+#include <numeric>
 #include <string>
 
 namespace hooke::interactive {
@@ -61,6 +63,9 @@ struct LiveSimulation::Impl {
   std::shared_ptr<contact::ContactBlock> contact;
   double tool_friction = 0.0;  // its Coulomb coefficient
   std::optional<LiveTool> tool_state;
+  contact::Pose tool_origin;  // where set_tool put it: a device's offset counts from here
+  // The body's compliance at surface nodes, for the tool's local contact model (made at its first use per model).
+  std::optional<solve::NodeCompliance> compliance;
 
   void forget_local_model() {
     contact_stiffness.resize(0, 0);
@@ -143,6 +148,7 @@ struct LiveSimulation::Impl {
   void rebuild(const VecX& x, const VecX& v, double t) {
     const int d = dim();
     forget_local_model();
+    compliance.reset();
     // With a tool, the simulator's model is the body's terms and the contact block (its stiffness from the current
     // E); `built`, which drawing threads share, stays the body's alone.
     std::shared_ptr<model::Model> simulated = built.model;
@@ -197,6 +203,38 @@ struct LiveSimulation::Impl {
                           contact->activation(),
                           contact->friction().coefficient,
                           pushed};
+  }
+
+  // The tool's local contact model at the current state (HapticModel::contact).
+  std::shared_ptr<const LocalContact> local_contact() {
+    const VecX& x = sim->positions();
+    if (!compliance) {
+      const VecX& rest = built.model->rest_positions();
+      std::vector<char> fixed(static_cast<size_t>(rest.size()), 0);
+      for (const int i : clamped)
+        for (int a = 0; a < 3; ++a) fixed[static_cast<size_t>(3 * i + a)] = 1;
+      compliance.emplace(built.model->hessian(rest), fixed, 3);
+    }
+    // The boundary nodes within reach, nearest first.
+    const double reach = local_contact_reach(*tool, mesh::bounding_box_diagonal(model.mesh), contact->activation());
+    const std::vector<int>& boundary = contact->nodes();
+    std::vector<std::pair<double, int>> near;  // distance, index in boundary
+    for (size_t k = 0; k < boundary.size(); ++k) {
+      const double gap = tool->signed_distance(x.segment<3>(3 * boundary[k]));
+      if (gap < reach) near.emplace_back(gap, static_cast<int>(k));
+    }
+    std::sort(near.begin(), near.end());
+    if (near.size() > static_cast<size_t>(kLocalContactNodes)) near.resize(static_cast<size_t>(kLocalContactNodes));
+    std::vector<int> nodes;
+    VecX positions(3 * static_cast<Eigen::Index>(near.size())), kappa(static_cast<Eigen::Index>(near.size()));
+    for (size_t j = 0; j < near.size(); ++j) {
+      const int node = boundary[static_cast<size_t>(near[j].second)];
+      nodes.push_back(node);
+      positions.segment<3>(3 * static_cast<Eigen::Index>(j)) = x.segment<3>(3 * node);
+      kappa(static_cast<Eigen::Index>(j)) = contact->stiffness()(near[j].second);
+    }
+    return std::make_shared<const LocalContact>(*tool, std::move(positions), std::move(kappa), contact->activation(),
+                                                compliance->block(nodes), tool_state->force);
   }
 
   // The surface model's Eq. 4 weights follow the probe: p_f at the first grabbed node, F_f along the drag.
@@ -328,6 +366,13 @@ HapticModel LiveSimulation::haptic_model() {
   h.grabbed = !m->probe.nodes.empty();
   h.offset = m->offset;
   h.force = m->force;
+  if (!h.grabbed && m->tool) {
+    h.tool = true;
+    if (m->settings.haptic_stiffness != HapticStiffness::kNone) h.contact = m->local_contact();
+    h.tool_origin = m->tool_origin;
+    h.offset = m->tool->pose().position - m->tool_origin.position;
+    h.force = m->tool_state->force;
+  }
   if (!h.grabbed || m->settings.haptic_stiffness == HapticStiffness::kNone) {
     h.stiffness = MatX::Zero(d, d);
     return h;
@@ -395,6 +440,7 @@ void LiveSimulation::set_tool(const std::string& shape, const contact::Pose& pos
   auto tool = std::make_shared<contact::RigidTool>(contact::parse_tool(shape));
   tool->set_pose(pose);
   m->tool = std::move(tool);
+  m->tool_origin = pose;
   m->tool_friction = friction;
   m->tool_state.reset();                                         // rebuild makes its contact block
   const VecX x = m->sim->positions(), v = m->sim->velocities();  // copies: rebuild replaces the simulator
@@ -403,6 +449,17 @@ void LiveSimulation::set_tool(const std::string& shape, const contact::Pose& pos
 
 void LiveSimulation::move_tool(const contact::Pose& pose) {
   if (m->tool) m->place_tool(pose);
+}
+
+void LiveSimulation::drive_tool(const VecX& offset) {
+  if (!m->tool) return;
+  if (offset.size() != 3 || !offset.allFinite()) throw InvalidArgument("a tool's offset needs 3 finite components");
+  m->place_tool({m->tool_origin.position + offset, m->tool_origin.rotation});
+}
+
+double local_contact_reach(const contact::RigidTool& tool, double diagonal, double activation) {
+  const bool round = tool.shape() == contact::ToolShape::kSphere || tool.shape() == contact::ToolShape::kCapsule;
+  return std::max(round ? tool.radius() : 0.02 * diagonal, activation);
 }
 
 void LiveSimulation::remove_tool() {

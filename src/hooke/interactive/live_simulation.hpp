@@ -50,6 +50,12 @@ struct LiveTool {
   int pushed_nodes = 0;           ///< nodes put back outside it when it moved faster than their gap
 };
 
+/// The most surface nodes a tool's local contact model holds (the nearest the tool).
+inline constexpr int kLocalContactNodes = 64;
+/// How far from a tool a surface node is taken into its local contact model, m: the radius of a sphere or a capsule,
+/// 2 % of the body's bounding-box diagonal `diagonal` (m) for a plane or a mesh; at least the activation distance.
+double local_contact_reach(const contact::RigidTool& tool, double diagonal, double activation);
+
 /// A static equilibrium under the probe's current displacement (what the viewer's FEM ghost shows).
 struct ProbeEquilibrium {
   VecX positions;       ///< flat, m, in the model's node order
@@ -110,6 +116,10 @@ class LiveSimulation {
   /// Moves the tool (before the next step; nodes it passed are put back outside it). No effect without a tool.
   /// @throws InvalidArgument for a non-finite pose or a matrix that is not a rotation
   void move_tool(const contact::Pose& pose);
+  /// Moves the tool to where set_tool put it plus `offset` (m, 3 components; its orientation kept): how a haptic
+  /// device drives a tool. No effect without a tool.
+  /// @throws InvalidArgument for an offset that is not 3 finite numbers
+  void drive_tool(const VecX& offset);
   /// Takes the tool away.
   void remove_tool();
   /// The tool and its contact after the last step (empty without a tool).
@@ -124,6 +134,9 @@ class LiveSimulation {
   /// The probe's local model after the last step, for a haptic loop (interactive::HapticModel): the probe force,
   /// the offset it was taken at and the local stiffness of LiveSettings::haptic_stiffness (condensed: computed at
   /// the first call after a grab or a new model; secant: updated by every step).
+  /// With a tool and no grab, the tool's local contact model instead (HapticModel::contact): the boundary nodes
+  /// within local_contact_reach of the tool (at most kLocalContactNodes, the nearest), their compliance (the
+  /// body's rest stiffness factorised at the first call after a new model) and the barrier.
   /// @throws SolverFailure when the condensation fails (a body not held)
   HapticModel haptic_model();
 

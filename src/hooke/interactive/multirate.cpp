@@ -4,6 +4,23 @@
 #include <hooke/interactive/multirate.hpp>
 
 namespace hooke::interactive {
+namespace {
+
+// The device drives the grab, or else the tool (LiveSimulation::drive_tool).
+void apply_device(LiveSimulation& sim, const VecX& offset) {
+  if (sim.grabbed().empty() && sim.tool())
+    sim.drive_tool(offset);
+  else
+    sim.drag(offset);
+}
+
+// The force on what the device drives after the last step, N.
+VecX device_force(const LiveSimulation& sim) {
+  if (sim.grabbed().empty() && sim.tool()) return sim.tool()->force;
+  return sim.probe_force();
+}
+
+}  // namespace
 
 VecX DeviceDrag::at(double t) const {
   const double x = std::clamp(t / ramp, 0.0, 1.0);
@@ -16,10 +33,10 @@ ForceTrace full_rate_force(LiveSimulation& sim, const DeviceDrag& device, double
   ForceTrace out;
   out.force.resize(steps, sim.model().mesh.dim());
   for (Eigen::Index k = 0; k < steps; ++k) {
-    sim.drag(device.at(sim.time()));
+    apply_device(sim, device.at(sim.time()));
     sim.step();
     out.time.push_back(sim.time());
-    out.force.row(k) = sim.probe_force().transpose();
+    out.force.row(k) = device_force(sim).transpose();
   }
   return out;
 }
@@ -33,14 +50,14 @@ ForceTrace multirate_force(LiveSimulation& sim, const DeviceDrag& device, double
   const auto ticks = static_cast<Eigen::Index>(std::llround(duration / haptic_dt));
   ForceTrace out;
   out.force.resize(ticks, sim.model().mesh.dim());
-  sim.drag(device.at(0.0));
+  apply_device(sim, device.at(0.0));
   HapticModel model = sim.haptic_model();  // in use: the grab's until the first step has finished, then the last's
   sim.step();                              // step 0: runs during [0, dt]
   for (Eigen::Index j = 1; j <= ticks; ++j) {
     const double t = static_cast<double>(j) * haptic_dt;
     if (j % ratio == 0) {  // the step started at t - dt has finished: its model takes over, the next step starts
       model = sim.haptic_model();
-      sim.drag(device.at(t));
+      apply_device(sim, device.at(t));
       sim.step();  // runs during [t, t + dt] while the ticks render `model`
     }
     out.time.push_back(t);

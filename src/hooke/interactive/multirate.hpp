@@ -29,12 +29,16 @@ struct ForceTrace {
   RowMatX force;             ///< N (ticks x dim)
 };
 
-/// The reference: `sim` (nodes already grabbed; advanced by the run) stepped at its own dt with the device's offset set
-/// before every step, for `duration` s; the force after each step, at the step's end time.
+/// The device drives the grab, or, without one, the tool (LiveSimulation::drive_tool; the force is then the tool's,
+/// rendered from its local contact model).
+///
+/// The reference: `sim` (nodes already grabbed or a tool set; advanced by the run) stepped at its own dt with the
+/// device's offset set before every step, for `duration` s; the force after each step, at the step's end time.
 ForceTrace full_rate_force(LiveSimulation& sim, const DeviceDrag& device, double duration);
 
-/// The multirate run: `sim` (nodes grabbed; advanced by the run; its settings' dt is the deformation step, a multiple
-/// of haptic_dt) deformed on the schedule above and rendered every haptic_dt from t = haptic_dt to `duration`.
+/// The multirate run: `sim` (nodes grabbed or a tool set; advanced by the run; its settings' dt is the deformation
+/// step, a multiple of haptic_dt) deformed on the schedule above and rendered every haptic_dt from t = haptic_dt to
+/// `duration`.
 /// @throws InvalidArgument when dt is not a whole multiple of haptic_dt
 ForceTrace multirate_force(LiveSimulation& sim, const DeviceDrag& device, double duration, double haptic_dt);
 

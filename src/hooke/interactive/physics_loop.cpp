@@ -396,8 +396,11 @@ void PhysicsLoop::take_inputs() {
       m_device_pending = false;
       const VecX offset = m_device_offset;
       lock.unlock();
-      try {
-        m_sim.drag(offset);
+      try {  // the device drives the grab, or else the tool
+        if (m_sim.grabbed().empty() && m_sim.tool())
+          m_sim.drive_tool(offset);
+        else
+          m_sim.drag(offset);
       } catch (const std::exception& e) {
         m_work_stats.error = std::string("device offset: ") + e.what();
       }
