@@ -43,6 +43,8 @@ int run_haptics(const BenchCli& o, const std::vector<int>& sizes) {
   h.method = o.options.methods.empty() ? h.method : o.options.methods.front();
   h.poisson = o.options.poisson;
   h.drag = o.options.drag;
+  h.tool_radius = o.options.tool_radius;
+  h.tool_press = o.options.tool_press;
   h.stiffness = interactive::haptic_stiffness_from_name(o.haptic_stiffness);
   h.curvature = o.haptic_curvature;
   h.deformation_dt = o.deformation_dt;
@@ -53,8 +55,9 @@ int run_haptics(const BenchCli& o, const std::vector<int>& sizes) {
   h.hold = o.hold;
   const interactive::HapticsBenchmarkReport report = interactive::run_haptics_benchmark(h);
   const std::string markdown = interactive::haptics_benchmark_markdown(h, report);
-  std::printf("hooke bench --haptics: multirate haptics (%s stiffness), the top's centre dragged\n\n%s",
-              o.haptic_stiffness.c_str(), markdown.c_str());
+  std::printf("hooke bench --haptics: multirate haptics (%s stiffness), %s\n\n%s", o.haptic_stiffness.c_str(),
+              h.tool_radius > 0.0 ? "a sphere pressed into the top's centre" : "the top's centre dragged",
+              markdown.c_str());
   if (!o.out_dir.empty()) {
     const std::filesystem::path dir(o.out_dir);
     create_output_folder(dir);
@@ -145,9 +148,11 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--press", o->options.press,
                   "Instead of the drag, press the whole top down by this fraction of the height (e.g. 0.3)")
       ->capture_default_str();
-  cmd->add_option("--tool", o->options.tool_radius,
-                  "Instead of the drag, a rigid sphere of this radius (m) pressed into the top's centre through the "
-                  "contact barrier (docs/contact.md), by --tool-press x the height")
+  cmd->add_option(
+         "--tool", o->options.tool_radius,
+         "Instead of the drag, a rigid sphere of this radius (m) pressed into the top's centre through the "
+         "contact barrier (docs/contact.md), by --tool-press x the height; with --haptics, the device presses it "
+         "and the 1 kHz force comes from its local contact model")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--tool-press", o->options.tool_press, "With --tool: how far it presses, a fraction of the height")
       ->check(CLI::Range(0.0, 0.9))

@@ -167,9 +167,14 @@ void ContactBlock::add_hessian_values(const Eigen::Ref<const VecX>& x, const mod
 }
 
 bool ContactBlock::add_node_stiffness(const Eigen::Ref<const VecX>& x, std::vector<std::pair<int, Mat3>>& out) const {
-  for_each_node_hessian(x, true,
-                        [&](int k, const Mat3& h) { out.emplace_back(m_nodes[static_cast<std::size_t>(k)], h); });
+  node_hessians(x, true, out);
   return true;
+}
+
+void ContactBlock::node_hessians(const Eigen::Ref<const VecX>& x, bool project_psd,
+                                 std::vector<std::pair<int, Mat3>>& out) const {
+  for_each_node_hessian(x, project_psd,
+                        [&](int k, const Mat3& h) { out.emplace_back(m_nodes[static_cast<std::size_t>(k)], h); });
 }
 
 template <class F>

@@ -66,6 +66,9 @@ class ContactBlock final : public model::TermBlock {
   void end_step(const Eigen::Ref<const VecX>& x) const override { lag(x); }
   /// The barrier's and the friction's Hessian per touching node, projected (what add_hessian_values adds).
   bool add_node_stiffness(const Eigen::Ref<const VecX>& x, std::vector<std::pair<int, Mat3>>& out) const override;
+  /// The same blocks, projected or exact (project_psd false: a curved tool's negative tangential curvature kept, what
+  /// a Newton iteration converges quadratically with where the rest of the Hessian outweighs it).
+  void node_hessians(const Eigen::Ref<const VecX>& x, bool project_psd, std::vector<std::pair<int, Mat3>>& out) const;
   std::string_view name() const override { return "contact"; }
   double energy(const Eigen::Ref<const VecX>& x) const override;
   void add_gradient(const Eigen::Ref<const VecX>& x, Eigen::Ref<VecX> gradient) const override;

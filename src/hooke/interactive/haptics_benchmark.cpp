@@ -25,16 +25,30 @@ LiveSimulation make_simulation(const mesh::Mesh& m, const HapticsBenchmarkOption
   s.simulator = o.simulator;
   s.dynamics.dt = dt;
   LiveSimulation sim(m, s);
-  sim.grab(experiments::benchmark_probe_nodes(m));
+  if (o.tool_radius > 0.0) {
+    const double top = m.nodes.col(2).maxCoeff();
+    sim.set_tool("sphere:" + std::to_string(o.tool_radius),
+                 {Vec3(0.0, 0.0, top + o.tool_radius + 1e-4), Mat3::Identity()});
+  } else {
+    sim.grab(experiments::benchmark_probe_nodes(m));
+  }
   return sim;
 }
 
-// Median wall time of `steps` steps of `sim` (after one untimed) while the device drags at `speed` m/s along x, s.
-double median_step(LiveSimulation& sim, int steps, double speed) {
+// The device: the drag along x, or the tool's press along -z by tool_press x the height.
+DeviceDrag device_of(const mesh::Mesh& m, const HapticsBenchmarkOptions& o) {
+  if (o.tool_radius > 0.0)
+    return {Vec3(0.0, 0.0, -1.0), o.tool_press * (m.nodes.col(2).maxCoeff() - m.nodes.col(2).minCoeff()), o.ramp};
+  return {Vec3(1.0, 0.0, 0.0), o.drag, o.ramp};
+}
+
+// Median wall time of `steps` steps of `sim` (after one untimed) while the device moves at `speed` m/s along
+// `direction`, s.
+double median_step(LiveSimulation& sim, int steps, double speed, const VecX& direction) {
   sim.step();
   std::vector<double> t;
   for (int k = 0; k < steps; ++k) {
-    sim.drag(Vec3(speed * sim.time(), 0.0, 0.0));
+    apply_device(sim, speed * sim.time() * direction);
     const auto a = Clock::now();
     sim.step();
     t.push_back(std::chrono::duration<double>(Clock::now() - a).count());
@@ -67,28 +81,31 @@ double realtime_error(const ForceTrace& haptic, const ForceTrace& reference, dou
 }  // namespace
 
 HapticsBenchmarkReport run_haptics_benchmark(const HapticsBenchmarkOptions& o) {
-  if (!(o.haptic_rate > 0.0) || !(o.ramp > 0.0) || !(o.hold >= 0.0) || !std::isfinite(o.drag))
-    throw InvalidArgument("haptics benchmark: the rate, ramp and hold must be > 0 (hold >= 0)");
+  if (!(o.haptic_rate > 0.0) || !(o.ramp > 0.0) || !(o.hold >= 0.0) || !std::isfinite(o.drag) ||
+      !(o.tool_radius >= 0.0) || !(o.tool_press > 0.0 && o.tool_press < 1.0))
+    throw InvalidArgument(
+        "haptics benchmark: the rate, ramp and hold must be > 0 (hold >= 0), the tool's radius >= 0 and its press "
+        "in (0, 1)");
   const double h = 1.0 / o.haptic_rate, duration = o.ramp + o.hold;
-  const DeviceDrag device{Vec3(1.0, 0.0, 0.0), o.drag, o.ramp};
   HapticsBenchmarkReport report;
   for (const int size : o.sizes) {
     const mesh::Mesh m = experiments::benchmark_cylinder(size);
+    const DeviceDrag device = device_of(m, o);
     HapticsBenchmarkRow row;
     row.nodes = m.node_count();
     // The deformation step: measured unless given.
     double dt = o.deformation_dt;
-    const double speed = 1.5 * o.drag / o.ramp;  // the ramp's fastest
+    const double speed = 1.5 * device.distance / o.ramp;  // the ramp's fastest
     if (!(dt > 0.0)) {
       LiveSimulation probe = make_simulation(m, o, 0.04);
-      dt = std::max(h, std::ceil(1.25 * median_step(probe, 5, speed) / h) * h);
+      dt = std::max(h, std::ceil(1.25 * median_step(probe, 5, speed, device.direction) / h) * h);
     }
     row.deformation_dt = dt;
     // The full-rate reference, when affordable.
     ForceTrace reference;
     {
       LiveSimulation full = make_simulation(m, o, h);
-      const double estimate = median_step(full, 5, speed) * duration / h;
+      const double estimate = median_step(full, 5, speed, device.direction) * duration / h;
       if (estimate <= o.reference_budget) {
         LiveSimulation fresh = make_simulation(m, o, h);
         const auto t0 = Clock::now();
@@ -162,9 +179,13 @@ std::string haptics_benchmark_markdown(const HapticsBenchmarkOptions& o, const H
       << num(w.deformation_rate) << " | " << num(w.haptic_rate, 5) << " | " << num(w.haptic_period_ms_p99) << " | "
       << num(w.haptic_tick_ms_p99) << " | " << num(w.schedule_error) << " | " << num(w.realtime_error) << " | "
       << num(w.held_error) << " | " << num(w.reference_seconds) << " |\n";
-  s << "\n"
-    << o.method << " at nu " << o.poisson << ", the probe dragged " << 1e3 * o.drag << " mm over " << o.ramp
-    << " s and held " << o.hold << " s; force errors relative to the full-rate reference's largest force.\n";
+  s << "\n" << o.method << " at nu " << o.poisson << ", ";
+  if (o.tool_radius > 0.0)
+    s << "a sphere of radius " << 1e3 * o.tool_radius << " mm pressed " << o.tool_press << " x the height into the top";
+  else
+    s << "the probe dragged " << 1e3 * o.drag << " mm";
+  s << " over " << o.ramp << " s and held " << o.hold
+    << " s; force errors relative to the full-rate reference's largest force.\n";
   for (const std::string& n : r.notes) s << "\n- " << n;
   if (!r.notes.empty()) s << "\n";
   return s.str();

@@ -1,10 +1,11 @@
 #pragma once
 /// The multirate haptics benchmark behind `hooke bench --haptics`: on the benchmark cylinders
 /// (experiments::benchmark_cylinder, the top's centre held: experiments::benchmark_probe_nodes), a device drags the
-/// probe along x (smoothstep ramp, then held) while the body deforms at its own rate and a haptic loop renders the
-/// force at 1 kHz. Measured per mesh: the haptic loop's achieved rate, period and tick percentiles and the
-/// deformation's rate (real threads, wall time), and the rendered force against the same drag simulated at the
-/// haptic rate throughout (the full-rate reference), both on the deterministic schedule and from the real-time run.
+/// probe along x (or, with a tool, presses a sphere into the top's centre) (smoothstep ramp, then held) while the body
+/// deforms at its own rate and a haptic loop renders the force at 1 kHz. Measured per mesh: the haptic loop's achieved
+/// rate, period and tick percentiles and the deformation's rate (real threads, wall time), and the rendered force
+/// against the same drag simulated at the haptic rate throughout (the full-rate reference), both on the deterministic
+/// schedule and from the real-time run.
 #include <hooke/interactive/haptic_model.hpp>
 #include <hooke/solve/simulator.hpp>
 #include <string>
@@ -18,9 +19,13 @@ struct HapticsBenchmarkOptions {
   double poisson = 0.45;              ///< nu
   double haptic_rate = 1000.0;        ///< Hz
   double drag = 2e-3;                 ///< device travel along x, m
-  double ramp = 1.0;                  ///< s of smoothstep ramp
-  double hold = 0.3;                  ///< s held after it
-  double damping_mass = 20.0;         ///< Rayleigh alpha, 1/s
+  /// > 0: instead of the grab, a sphere of this radius (m) over the top's centre, 0.1 mm above it, pressed by the
+  /// device `tool_press` x the height down along -z (the force rendered from its local contact model, LocalContact)
+  double tool_radius = 0.0;
+  double tool_press = 0.1;
+  double ramp = 1.0;           ///< s of smoothstep ramp
+  double hold = 0.3;           ///< s held after it
+  double damping_mass = 20.0;  ///< Rayleigh alpha, 1/s
   HapticStiffness stiffness = HapticStiffness::kSecant;
   bool curvature = true;  ///< LiveSettings::haptic_curvature
   /// the deformation's integrator (and the reference's): quasi-newton at kDeformationTolerance by default

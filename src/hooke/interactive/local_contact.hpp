@@ -10,8 +10,10 @@
 /// is the barrier's at the minimiser. The contact set changes between two steps as the tool moves: nodes may touch that
 /// did not, and lose contact. Friction is held at the step's value (the lagged friction does not move within a
 /// deformation step).
+#include <Eigen/Cholesky>
 #include <hooke/contact/rigid_tool.hpp>
 #include <hooke/core/types.hpp>
+#include <mutex>
 #include <vector>
 
 namespace hooke::interactive {
@@ -30,7 +32,8 @@ class LocalContact {
 
   /// The force the body exerts on the tool at `pose`, N: the barrier's force at the local equilibrium, plus the
   /// step's friction force. Nodes the pose puts inside the tool start from outside it (half the activation distance).
-  /// `nodes_in_contact`, when given, receives the nodes within the activation distance there.
+  /// `nodes_in_contact`, when given, receives the nodes within the activation distance there. Each call starts
+  /// from the last call's solution (a haptic loop's poses are near each other); thread-safe.
   Vec3 force(const contact::Pose& pose, int* nodes_in_contact = nullptr) const;
 
   const contact::RigidTool& tool() const { return m_tool; }  ///< at the step's pose
@@ -41,9 +44,12 @@ class LocalContact {
   contact::RigidTool m_tool;
   VecX m_x0, m_stiffness;
   double m_activation;
-  MatX m_compliance, m_stiffness_matrix;  // C and C^-1
-  VecX m_f0;                              // the barrier's force on the nodes at the step, N
-  Vec3 m_held = Vec3::Zero();             // the step's friction force on the tool, N
+  MatX m_compliance;           // C
+  Eigen::LLT<MatX> m_factor;   // of C: C^-1 d by two triangular solves
+  VecX m_f0;                   // the barrier's force on the nodes at the step, N
+  Vec3 m_held = Vec3::Zero();  // the step's friction force on the tool, N
+  mutable std::mutex m_mutex;  // guards m_last
+  mutable VecX m_last;         // the last call's node positions (empty: none yet), m
 };
 
 }  // namespace hooke::interactive

@@ -4,9 +4,7 @@
 #include <hooke/interactive/multirate.hpp>
 
 namespace hooke::interactive {
-namespace {
 
-// The device drives the grab, or else the tool (LiveSimulation::drive_tool).
 void apply_device(LiveSimulation& sim, const VecX& offset) {
   if (sim.grabbed().empty() && sim.tool())
     sim.drive_tool(offset);
@@ -14,13 +12,10 @@ void apply_device(LiveSimulation& sim, const VecX& offset) {
     sim.drag(offset);
 }
 
-// The force on what the device drives after the last step, N.
 VecX device_force(const LiveSimulation& sim) {
   if (sim.grabbed().empty() && sim.tool()) return sim.tool()->force;
   return sim.probe_force();
 }
-
-}  // namespace
 
 VecX DeviceDrag::at(double t) const {
   const double x = std::clamp(t / ramp, 0.0, 1.0);

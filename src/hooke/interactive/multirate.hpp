@@ -29,6 +29,12 @@ struct ForceTrace {
   RowMatX force;             ///< N (ticks x dim)
 };
 
+/// The device's offset (m, dim) to `sim`: it drives the grab, or, without one, the tool (LiveSimulation::drive_tool).
+/// @throws InvalidArgument for an offset of the wrong size or not finite
+void apply_device(LiveSimulation& sim, const VecX& offset);
+/// The force on what the device drives after the last step, N (dim): the probe's, or the tool's.
+VecX device_force(const LiveSimulation& sim);
+
 /// The device drives the grab, or, without one, the tool (LiveSimulation::drive_tool; the force is then the tool's,
 /// rendered from its local contact model).
 ///
