@@ -178,10 +178,19 @@ class Viewer {
                    mu = m_state.tool_friction](interactive::LiveSimulation& sim) {
         sim.set_tool(shape, {at, Mat3::Identity()}, mu);
       });
+      m_tool_origin = *e.place_tool;
+      if (m_haptics) set_device(VecX::Zero(3));  // the device now drives the tool from where it was put
     }
-    if (e.move_tool)
-      m_loop.post([at = *e.move_tool](interactive::LiveSimulation& sim) { sim.move_tool({at, Mat3::Identity()}); });
-    if (e.lift_tool) m_loop.post([](interactive::LiveSimulation& sim) { sim.remove_tool(); });
+    if (e.move_tool) {
+      if (m_haptics)  // the haptic loop moves it and renders its force from the local contact model
+        set_device(*e.move_tool - m_tool_origin);
+      else
+        m_loop.post([at = *e.move_tool](interactive::LiveSimulation& sim) { sim.move_tool({at, Mat3::Identity()}); });
+    }
+    if (e.lift_tool) {
+      m_loop.post([](interactive::LiveSimulation& sim) { sim.remove_tool(); });
+      if (m_haptics) set_device(VecX());
+    }
     if (e.grab) {
       m_loop.post([nodes = *e.grab](interactive::LiveSimulation& sim) { sim.grab(nodes); });
       set_device(VecX::Zero(m_dim));
@@ -299,6 +308,7 @@ class Viewer {
   ColourField m_colours;
   std::unique_ptr<io::SeriesWriter> m_series;
   interactive::Guarded<VecX> m_device{VecX()};         // the mouse's offset for the haptic loop
+  Vec3 m_tool_origin = Vec3::Zero();                   // where the mouse put the tool (the device's zero)
   std::unique_ptr<interactive::HapticLoop> m_haptics;  // last: stopped before what it reads goes
   int m_width = 1, m_height = 1;
   DrawCounts m_draw;

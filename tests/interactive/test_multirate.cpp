@@ -5,11 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <hooke/calibrate/model_factory.hpp>
 #include <hooke/contact/contact_block.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/interactive/haptic_loop.hpp>
 #include <hooke/interactive/local_contact.hpp>
 #include <hooke/interactive/multirate.hpp>
+#include <hooke/model/problem.hpp>
+#include <hooke/model/support.hpp>
+#include <hooke/solve/tool_press.hpp>
 #include <iostream>
 #include <thread>
 
@@ -236,6 +240,52 @@ TEST(LocalContact, OneNodeUnderAPlaneBalancesItsComplianceAndTheBarrier) {
   }
   // Lifted away: no force.
   EXPECT_LT(local.force({Vec3(0.0, 0.0, 1.0 + 2.0 * dhat), plane.pose().rotation}).norm(), 1e-12);
+}
+
+// The real threads with a tool: the haptic thread at 1 kHz drives a sphere 2 mm into the top over 0.2 s and holds it,
+// the physics deforms at 100 Hz. After it settles the rendered force is the quasi-static press's at that pose
+// (solve::press_quasi_statically on a problem assembled here), within 5 %.
+TEST(HapticLoop, RendersAPressingToolsForceBesideTheDeformation) {
+  const mesh::Mesh m = cylinder();
+  const double top = m.nodes.col(2).maxCoeff(), r = 0.005;
+  LiveSimulation sim = pressed(m, 0.01, HapticStiffness::kSecant);
+  const calibrate::CalibratedModel model = sim.model();
+  const std::vector<int> clamped = sim.clamped_nodes();
+  PhysicsLoop physics(std::move(sim), true);
+  const DeviceDrag press{Vec3(0.0, 0.0, -1.0), 2.2e-3, 0.2};  // from 0.2 mm above: 2 mm deep
+  HapticLoop haptics(
+      physics, [&](double t) { return press.at(t); }, 1000.0, true);
+  physics.start();
+  haptics.start();
+  const auto start = std::chrono::steady_clock::now();
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  while (physics.stats().steps < 150 && std::chrono::steady_clock::now() - start < std::chrono::seconds(120))
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  haptics.stop();
+  physics.stop();
+  const HapticStats h = haptics.stats();
+  const PhysicsStats p = physics.stats();
+  std::cout << "[haptics, tool] " << h.ticks << " ticks, period p99 " << h.period_ms_p99 << " ms, tick median "
+            << h.tick_ms_median << " ms p99 " << h.tick_ms_p99 << " ms; " << h.models << " deformation models\n";
+  EXPECT_TRUE(p.error.empty()) << p.error;
+  EXPECT_GT(h.models, 10);
+
+  auto tool = std::make_shared<contact::RigidTool>(contact::ToolShape::kSphere, r);
+  const calibrate::BuiltModel built = calibrate::build_model(model);
+  auto block = contact::boundary_contact(model.mesh, model.material.youngs_modulus, tool);
+  const contact::ContactBlock& contact = *block;
+  built.model->add(std::move(block));
+  model::Problem problem = model::make_problem(built.model);
+  model::fix_nodes(problem, clamped);
+  std::vector<contact::Pose> poses;
+  for (int k = 0; k <= 5; ++k) poses.push_back({Vec3(0.0, 0.0, top + r + 2e-4 - 0.44e-3 * k), Mat3::Identity()});
+  tool->set_pose(poses[0]);
+  const Vec3 still = solve::press_quasi_statically(problem, contact, *tool, poses).back().tool_force;
+  const VecX felt = haptics.force();
+  ASSERT_EQ(felt.size(), 3);
+  EXPECT_GT(still.z(), 0.05);
+  EXPECT_LT((felt - still).norm(), 0.05 * still.norm())
+      << "felt " << felt.transpose() << ", static " << still.transpose();
 }
 
 }  // namespace

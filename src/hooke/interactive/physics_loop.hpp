@@ -85,11 +85,13 @@ class PhysicsLoop {
   void set_paused(bool paused);
   bool paused() const;
 
-  /// Multirate haptics (HapticLoop): from now on the physics publishes the probe's local model after every step
-  /// (LiveSimulation::haptic_model; the first one after a grab condenses the stiffness, a longer step).
+  /// Multirate haptics (HapticLoop): from now on the physics publishes the probe's (or the tool's) local model after
+  /// every step (LiveSimulation::haptic_model; the first one after a grab condenses the stiffness, the first with a
+  /// tool factorises the body's rest stiffness: a longer step).
   void enable_haptics();
   /// The probe's offset for the next step, m (dim): a haptic device's position. Replaces one not yet taken (no
-  /// queue: only the newest matters); ignored without a grab.
+  /// queue: only the newest matters). Without a grab it moves the tool from where it was put
+  /// (LiveSimulation::drive_tool); ignored with neither.
   void set_device_offset(const VecX& offset);
   /// The local model after the last step (before the first: the one the thread published when it started, that of
   /// the state it started from; version 0 without enable_haptics()). Takes only a
