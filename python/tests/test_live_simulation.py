@@ -129,3 +129,29 @@ def test_haptic_model_renders_between_steps():
         sim.apply(haptic_curvature="maybe")
     with pytest.raises(hooke.InvalidArgument, match="haptic stiffness"):
         sim.apply(haptic_stiffness="springy")
+
+
+def test_a_tool_pressed_by_a_device_renders_its_force_from_the_local_contact_model():
+    """A sphere driven 2 mm into the top (drive_tool, 10 ms steps): the haptic model carries the nodes near it; at
+    the step's offset it renders the step's force, deeper it renders more, and the next step agrees within 5 %."""
+    model = cylinder_model("any-nu-tet")
+    sim = hooke.LiveSimulation(model, dt=0.01, damping_mass=60.0)
+    top = np.asarray(model.mesh.points)[:, 2].max()
+    sim.set_tool("sphere:0.005", [0.0, 0.0, top + 0.005 + 2e-4])
+    for k in range(1, 61):
+        sim.drive_tool([0.0, 0.0, -2.2e-3 * min(1.0, k / 30)])
+        sim.step()
+    h = sim.haptic_model()
+    assert h.tool and h.contact_nodes > 0
+    here = np.array(h.render(h.offset))
+    assert np.allclose(here, sim.tool_force, rtol=1e-9, atol=1e-12)
+    deeper = np.array(h.render(np.array(h.offset) + [0.0, 0.0, -1e-4]))
+    assert deeper[2] > here[2] > 0.01
+    sim.drive_tool(np.array(h.offset) + [0.0, 0.0, -1e-4])
+    for _ in range(100):
+        sim.step()
+    assert abs(deeper[2] - sim.tool_force[2]) < 0.05 * sim.tool_force[2]
+    with pytest.raises(ValueError, match="NaN"):
+        sim.drive_tool([0.0, np.nan, 0.0])
+    sim.remove_tool()
+    assert sim.tool_force == []

@@ -12,7 +12,6 @@
 namespace py = pybind11;
 
 namespace hooke::python {
-namespace {
 
 contact::Pose pose_argument(const py::handle& position, const py::handle& rotation) {
   contact::Pose pose;
@@ -20,6 +19,8 @@ contact::Pose pose_argument(const py::handle& position, const py::handle& rotati
   if (!rotation.is_none()) pose.rotation = matrix_argument(rotation, "rotation", 3, 3);
   return pose;
 }
+
+namespace {
 
 VecX flat_positions(const py::handle& positions, Eigen::Index nodes) {
   const RowMatX x = matrix_argument(positions, "positions", nodes, 3);

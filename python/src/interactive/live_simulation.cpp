@@ -3,6 +3,7 @@
 // hooke.fem_probe_equilibrium, the FEM reference under the same probe.
 #include <pybind11/stl.h>
 #include <bindings.hpp>
+#include <contact/tool.hpp>
 #include <core/arrays.hpp>
 #include <hooke/interactive/guarded.hpp>
 #include <hooke/interactive/live_simulation.hpp>
@@ -118,6 +119,40 @@ void define_live_simulation(py::module_& m) {
           py::arg("offset"), "Drives the grabbed nodes to their grab positions + offset (m, dim).")
       .def(
           "release", [](SharedSimulation& s) { locked(s, [](Sim& sim) { sim.release(); }); }, "Lets go.")
+      .def(
+          "set_tool",
+          [](SharedSimulation& s, const std::string& shape, const py::object& position, const py::object& rotation,
+             double friction) {
+            const contact::Pose pose = pose_argument(position, rotation);
+            locked(s, [&](Sim& sim) { sim.set_tool(shape, pose, friction); });
+          },
+          py::arg("shape"), py::arg("position"), py::arg("rotation") = py::none(), py::arg("friction") = 0.0,
+          "Puts a rigid tool ('sphere:R', 'capsule:R,L', 'mesh:FILE'; m) at position (m) against the body, with "
+          "Coulomb friction; nodes inside it are put outside. Without a grab, haptic_model() then carries its local "
+          "contact model and a device drives it with drive_tool (docs/contact.md).")
+      .def(
+          "move_tool",
+          [](SharedSimulation& s, const py::object& position, const py::object& rotation) {
+            const contact::Pose pose = pose_argument(position, rotation);
+            locked(s, [&](Sim& sim) { sim.move_tool(pose); });
+          },
+          py::arg("position"), py::arg("rotation") = py::none(), "Moves the tool before the next step.")
+      .def(
+          "drive_tool",
+          [](SharedSimulation& s, const py::object& offset) {
+            const VecX u = vector_argument(offset, "offset", 3);
+            locked(s, [&](Sim& sim) { sim.drive_tool(u); });
+          },
+          py::arg("offset"), "Moves the tool to where set_tool put it + offset (m, 3): a haptic device's position.")
+      .def(
+          "remove_tool", [](SharedSimulation& s) { locked(s, [](Sim& sim) { sim.remove_tool(); }); },
+          "Takes the tool away.")
+      .def_property_readonly(
+          "tool_force",
+          [](SharedSimulation& s) {
+            return as_list(locked(s, [](const Sim& sim) { return sim.tool() ? VecX(sim.tool()->force) : VecX(); }));
+          },
+          "the force the body exerts on the tool after the last step, N (3; empty without a tool)")
       .def_property_readonly(
           "probe_force",
           [](SharedSimulation& s) { return as_list(locked(s, [](const Sim& sim) { return sim.probe_force(); })); },
@@ -158,12 +193,25 @@ void define_live_simulation(py::module_& m) {
           "curvature", [](const interactive::HapticModel& h) { return as_array(h.curvature); },
           "the condensed energy's third derivative at the grab, N/m^2 (dim x dim^2: T[c, a dim + b]; 0 x 0 when "
           "the model is linear, haptic_curvature=False)")
+      .def_readonly("tool", &interactive::HapticModel::tool,
+                    "a tool without a grab: offset and force are the tool's (from where set_tool put it)")
+      .def_property_readonly(
+          "contact_nodes", [](const interactive::HapticModel& h) { return h.contact ? h.contact->node_count() : 0; },
+          "the surface nodes of the tool's local contact model (0: none)")
       .def(
           "render",
           [](const interactive::HapticModel& h, const py::object& u) {
-            return as_list(h.render(vector_argument(u, "offset", h.offset.size())));
+            const VecX offset = vector_argument(u, "offset", h.offset.size());
+            VecX f;
+            {
+              py::gil_scoped_release release;
+              f = h.render(offset);
+            }
+            return as_list(f);
           },
-          py::arg("offset"), "The force on the probe at `offset` (m, dim), N.");
+          py::arg("offset"),
+          "The force on the probe, or on the tool, at the device's `offset` (m, dim), N: the local model's (a "
+          "tool's from its local contact model, docs/contact.md).");
   m.def(
       "fem_probe_equilibrium",
       [](const calibrate::CalibratedModel& model, const std::string& law, const std::vector<int>& clamped,
