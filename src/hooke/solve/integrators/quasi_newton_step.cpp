@@ -322,7 +322,7 @@ class QuasiNewtonStep final : public IntegratorStep {
     std::size_t kept = m_contact_nodes.size();
     for (const auto& [node, h] : m_merged)
       if (std::find(m_contact_nodes.begin(), m_contact_nodes.end(), node) == m_contact_nodes.end()) ++kept;
-    if (static_cast<int>(kept) > kMaxContactNodes) m_contact_nodes.clear();
+    if (static_cast<int>(kept) > kMaxContactNodes) drop_contact_columns_except(m_merged);
     for (const auto& [node, h] : m_merged)
       if (std::find(m_contact_nodes.begin(), m_contact_nodes.end(), node) == m_contact_nodes.end())
         add_contact_columns(node);
@@ -374,6 +374,26 @@ class QuasiNewtonStep final : public IntegratorStep {
       }
     }
     m_contact_nodes.push_back(node);
+  }
+
+  // Drops W's columns of the contact nodes not in `keep` (their solves are what a column costs, so those still in
+  // contact keep theirs: a contact set larger than the bound then changes only at its edge, measured on the 11 425-node
+  // cylinder under a sphere, where clearing all of them every step took 0.3 s).
+  void drop_contact_columns_except(const std::vector<std::pair<int, Mat3>>& keep) {
+    const Eigen::Index per = m_components == 3 ? 1 : 3;
+    Eigen::Index next = 0;
+    std::vector<int> nodes;
+    for (size_t j = 0; j < m_contact_nodes.size(); ++j) {
+      const int node = m_contact_nodes[j];
+      if (std::find_if(keep.begin(), keep.end(), [&](const auto& e) { return e.first == node; }) == keep.end())
+        continue;
+      if (next != static_cast<Eigen::Index>(j))
+        m_contact_w.middleCols(per * next, per) = m_contact_w.middleCols(per * static_cast<Eigen::Index>(j), per);
+      nodes.push_back(node);
+      ++next;
+    }
+    m_contact_w.conservativeResize(Eigen::NoChange, per * next);
+    m_contact_nodes = std::move(nodes);
   }
 
   // Entry `row` (a DOF) of W's column l (3 per contact node).
