@@ -132,6 +132,19 @@ TEST(Multirate, TheSecantStiffnessStartsFromTheCondensedOne) {
   EXPECT_EQ(secant.haptic_model().stiffness, k);
 }
 
+// Runs both loops for 1.5 s of simulated time at 100 Hz (150 steps; a loaded or sanitized build may need more wall
+// time for them, up to 2 minutes), then stops them.
+void run_for_150_steps(PhysicsLoop& physics, HapticLoop& haptics) {
+  physics.start();
+  haptics.start();
+  const auto start = std::chrono::steady_clock::now();
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  while (physics.stats().steps < 150 && std::chrono::steady_clock::now() - start < std::chrono::seconds(120))
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  haptics.stop();
+  physics.stop();
+}
+
 // The real thing: the haptic thread at 1 kHz beside the physics thread at 100 Hz, a scripted device dragging the
 // probe 1 mm over 0.2 s and holding it. After it settles the rendered force is the static equilibrium's holding
 // force (within 5 %), and both loops reported what they did.
@@ -149,15 +162,7 @@ TEST(HapticLoop, RendersTheHoldingForceBesideTheDeformation) {
   const DeviceDrag drag{Vec3(1.0, 0.0, 0.0), 1e-3, 0.2};
   HapticLoop haptics(
       physics, [&](double t) { return drag.at(t); }, 1000.0, true);
-  physics.start();
-  haptics.start();
-  // 1.5 s of simulated time (150 steps; a loaded or sanitized build may need more wall time for them).
-  const auto start = std::chrono::steady_clock::now();
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
-  while (physics.stats().steps < 150 && std::chrono::steady_clock::now() - start < std::chrono::seconds(120))
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  haptics.stop();
-  physics.stop();
+  run_for_150_steps(physics, haptics);
   const HapticStats h = haptics.stats();
   const PhysicsStats p = physics.stats();
   std::cout << "[haptics] " << h.ticks << " ticks, " << h.achieved_rate << " Hz, period median " << h.period_ms_median
@@ -255,14 +260,7 @@ TEST(HapticLoop, RendersAPressingToolsForceBesideTheDeformation) {
   const DeviceDrag press{Vec3(0.0, 0.0, -1.0), 2.2e-3, 0.2};  // from 0.2 mm above: 2 mm deep
   HapticLoop haptics(
       physics, [&](double t) { return press.at(t); }, 1000.0, true);
-  physics.start();
-  haptics.start();
-  const auto start = std::chrono::steady_clock::now();
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
-  while (physics.stats().steps < 150 && std::chrono::steady_clock::now() - start < std::chrono::seconds(120))
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  haptics.stop();
-  physics.stop();
+  run_for_150_steps(physics, haptics);
   const HapticStats h = haptics.stats();
   const PhysicsStats p = physics.stats();
   std::cout << "[haptics, tool] " << h.ticks << " ticks, period p99 " << h.period_ms_p99 << " ms, tick median "

@@ -73,21 +73,16 @@ Vec3 LocalContact::force(const contact::Pose& pose, int* nodes_in_contact) const
   //   (K + U L U^T)^-1 g = C g - W (L^-1 + U^T W)^-1 W^T g,  W = C U,
   // an a x a Cholesky for a touching nodes (a fraction of a millisecond where the exact 3a x 3a system took several).
   std::vector<int> used;
+  std::vector<Vec3> v;
+  std::vector<double> l;
   MatX w, small;
-  VecX lambda;
   Eigen::LLT<MatX> llt;
-  const auto direction = [&](const VecX& cg) {
-    VecX step = -cg;
-    if (used.empty()) return step;
-    step += w * llt.solve(w.transpose() * g);
-    return step;
-  };
   for (int iteration = 0; iteration < 50 && residual >= tolerance && n > 0 && std::isfinite(e); ++iteration) {
     blocks.clear();
     block.node_hessians(x, false, blocks);
     used.clear();
-    std::vector<Vec3> v;
-    std::vector<double> l;
+    v.clear();
+    l.clear();
     for (const auto& [node, h] : blocks) {
       Eigen::SelfAdjointEigenSolver<Mat3> eig;
       eig.computeDirect(h);
@@ -106,10 +101,9 @@ Vec3 LocalContact::force(const contact::Pose& pose, int* nodes_in_contact) const
         small(p, q) = v[static_cast<size_t>(p)].dot(w.block<3, 1>(3 * used[static_cast<size_t>(p)], q));
       small(p, p) += 1.0 / l[static_cast<size_t>(p)];
     }
-    if (a > 0) llt.compute(small);
-    if (a > 0 && llt.info() != Eigen::Success) used.clear();
     const VecX cg = m_compliance * g;
-    VecX step = direction(cg);
+    VecX step = -cg;
+    if (a > 0 && llt.compute(small).info() == Eigen::Success) step += w * llt.solve(w.transpose() * g);
     double slope = g.dot(step);
     if (!(slope < 0.0)) {  // not a descent direction (round-off): C's, which is one
       step = -cg;
