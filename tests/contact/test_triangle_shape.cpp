@@ -15,7 +15,10 @@
 #include <hooke/model/support.hpp>
 #include <hooke/solve/tool_press.hpp>
 #include <iostream>
+#include <map>
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace hooke::contact {
 namespace {
@@ -52,6 +55,40 @@ TEST(TriangleShape, DistancesToACubeAreExactAndSigned) {
   mesh::Mesh open = unit_cube();
   open.elements.conservativeResize(11, 3);
   EXPECT_THROW(TriangleShape{open}, InvalidMesh);
+}
+
+// Every edge of a faceted sphere signs the points just outside and just inside it along its pseudo-normal (the sum of
+// its two faces' normals, computed here): those points' closest feature is the edge, whose pseudo-normal alone
+// decides the sign. The heap is first filled with nodes of the shape's edge map holding garbage, so that a
+// pseudo-normal summed onto an uninitialised vector (a fixed-size Eigen vector is not zeroed) shows here, as it did in
+// a press.
+TEST(TriangleShape, EveryEdgeSignsPointsBesideIt) {
+  {
+    std::map<std::pair<int, int>, Vec3> garbage;
+    for (int i = 0; i < 20000; ++i) garbage.emplace(std::pair{i, i}, Vec3(0.3, -7.0, 5.0));
+  }
+  const ToolSurface sphere = tool_surface(RigidTool(ToolShape::kSphere, 0.01), 24);
+  const mesh::Mesh m = mesh::make_mesh(mesh::ElementKind::kSurfaceTriangle, sphere.nodes, sphere.triangles, "sphere");
+  const TriangleShape shape(m);
+  std::map<std::pair<int, int>, std::vector<Vec3>> normals;
+  for (Eigen::Index f = 0; f < m.elements.rows(); ++f) {
+    const Vec3 a = m.nodes.row(m.elements(f, 0)), b = m.nodes.row(m.elements(f, 1)), c = m.nodes.row(m.elements(f, 2));
+    for (int k = 0; k < 3; ++k) {
+      const int i = m.elements(f, k), j = m.elements(f, (k + 1) % 3);
+      normals[{std::min(i, j), std::max(i, j)}].push_back((b - a).cross(c - a).normalized());
+    }
+  }
+  int checked = 0;
+  for (const auto& [edge, n] : normals) {
+    ASSERT_EQ(n.size(), 2u);
+    const Vec3 pseudo = (n[0] + n[1]).normalized();
+    const Vec3 mid = 0.5 * (Vec3(m.nodes.row(edge.first)) + Vec3(m.nodes.row(edge.second)));
+    const double h = 1e-6;
+    EXPECT_NEAR(shape.distance(mid + h * pseudo).distance, h, 1e-12) << edge.first << "-" << edge.second;
+    EXPECT_LT(shape.distance(mid - h * pseudo).distance, 0.0) << edge.first << "-" << edge.second;
+    ++checked;
+  }
+  EXPECT_GT(checked, 500);
 }
 
 // In a turned, shifted pose: the normal against central differences of the distance, the curvature against those of

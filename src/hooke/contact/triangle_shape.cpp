@@ -65,14 +65,15 @@ TriangleShape::TriangleShape(mesh::Mesh surface, double rounding)
       const Vec3 u = (p[(k + 1) % 3] - p[k]).normalized(), v = (p[(k + 2) % 3] - p[k]).normalized();
       m_vertex_normal[static_cast<std::size_t>(t(e, k))] += std::acos(std::clamp(u.dot(v), -1.0, 1.0)) * n;
       const int i = t(e, k), j = t(e, (k + 1) % 3);
-      edge_sum[{std::min(i, j), std::max(i, j)}] += n;
+      // try_emplace: a fixed-size Eigen vector is not zero on default construction.
+      edge_sum.try_emplace({std::min(i, j), std::max(i, j)}, Vec3::Zero()).first->second += n;
     }
   }
   for (std::size_t f = 0; f < faces; ++f)
     for (int k = 0; k < 3; ++k) {
       const auto e = static_cast<Eigen::Index>(f);
       const int i = t(e, k), j = t(e, (k + 1) % 3);
-      m_edge_normal[f][static_cast<std::size_t>(k)] = edge_sum[{std::min(i, j), std::max(i, j)}].normalized();
+      m_edge_normal[f][static_cast<std::size_t>(k)] = edge_sum.at({std::min(i, j), std::max(i, j)}).normalized();
     }
   for (Vec3& n : m_vertex_normal) n.normalize();
   m_lo = x.colwise().minCoeff().transpose();
