@@ -26,6 +26,9 @@ void print_model(const calibrate::CalibratedModel& m) {
               m.springs.pairs.size(), m.springs.pairs.empty() ? 0.0 : m.springs.stiffness.minCoeff(),
               m.springs.pairs.empty() ? 0.0 : m.springs.stiffness.maxCoeff(),
               static_cast<long>(m.springs.volume_tets.rows()), m.surface ? ", anchors at every node" : "", total);
+  if (!m.regions.empty())
+    for (const std::string& line : calibrate::describe_region_materials(m.mesh, m.material, m.regions))
+      std::printf("  material  %s\n", line.c_str());
   if (!m.meshing.empty()) std::printf("  meshing   %s\n", m.meshing.c_str());
   for (const auto& w : m.warnings) std::printf("  warning   %s\n", w.c_str());
 }

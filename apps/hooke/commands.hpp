@@ -39,11 +39,12 @@ void add_settings(CLI::App* cmd, const std::vector<settings::Description>& rows,
 struct ModelSource {
   std::string mesh_path, unit = "m", model_path, law = "linear", plane = "stress";
   double young = std::nan(""), poisson = std::nan(""), thickness = 1e-3;  ///< NaN: not given
-  GivenSettings given;  ///< the calibration settings given (--method, --density, --size, ...)
+  GivenSettings given;                 ///< the calibration settings given (--method, --density, --size, ...)
+  std::vector<std::string> materials;  ///< --material REGION=E,NU, as given
 };
 
-/// Registers [MESH], --model, --young, --poisson, --unit, --thickness, --plane and every calibration setting of
-/// `command` (settings::Command) on `cmd`, bound to `in`.
+/// Registers [MESH], --model, --young, --poisson, --material, --unit, --thickness, --plane and every calibration
+/// setting of `command` (settings::Command) on `cmd`, bound to `in`.
 void add_model_source_options(CLI::App* cmd, ModelSource& in, unsigned command);
 /// The calibration settings `in` gives, lengths converted from the mesh unit to metres.
 /// @throws InvalidArgument for a malformed or out-of-range value, naming the option

@@ -5,6 +5,7 @@
 #include <hooke/calibrate/model_factory.hpp>
 #include <hooke/calibrate/model_file.hpp>
 #include <hooke/calibrate/model_settings.hpp>
+#include <hooke/calibrate/region_materials.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/units.hpp>
 #include <hooke/io/mesh_io.hpp>
@@ -63,6 +64,10 @@ void add_model_source_options(CLI::App* cmd, ModelSource& in, unsigned command) 
                   "--method, --young and --poisson");
   cmd->add_option("--young", in.young, "Young's modulus E, Pa");
   cmd->add_option("--poisson", in.poisson, "Poisson's ratio nu, in (-1, 0.5)");
+  cmd->add_option("--material", in.materials,
+                  "REGION=E,NU (repeatable): E (Pa) and nu of the elements of one region (a mesh's region tag, an "
+                  "image's label); --young and --poisson are then those of the regions not listed, and may be left "
+                  "out when every region is (docs/regions.md)");
   cmd->add_option("--unit", in.unit, "Length unit of the mesh file (and of printed lengths): m, cm, mm, um")
       ->capture_default_str();
   cmd->add_option("--thickness", in.thickness, "Plate thickness for 2D meshes, m")->capture_default_str();
@@ -86,20 +91,23 @@ calibrate::CalibratedModel load_model(const ModelSource& source) {
   io::ReadOptions ro;
   ro.metres_per_unit = metres_per_unit(in.unit);
   if (!in.model_path.empty()) {
-    if (!std::isnan(in.young) || !std::isnan(in.poisson))
-      throw InvalidArgument("--model carries its material: drop --young and --poisson");
+    if (!std::isnan(in.young) || !std::isnan(in.poisson) || !in.materials.empty())
+      throw InvalidArgument("--model carries its material: drop --young, --poisson and --material");
     calibrate::CalibratedModel model = calibrate::read_model(in.model_path);
     if (!in.mesh_path.empty()) calibrate::require_same_nodes(model, io::read_mesh(in.mesh_path, ro));
     return model;
   }
   if (in.mesh_path.empty()) throw InvalidArgument("give a mesh file (or --model MODEL.json)");
-  if (std::isnan(in.young) || std::isnan(in.poisson))
-    throw InvalidArgument("--young and --poisson are required (or --model MODEL.json)");
+  if (in.materials.empty() && (std::isnan(in.young) || std::isnan(in.poisson)))
+    throw InvalidArgument("--young and --poisson are required (or --material REGION=E,NU, or --model MODEL.json)");
   // The law is the FEM model's (--method fem); every calibration starts from the linear material.
-  const calibrate::ModelOptions mo = calibration_settings(in).model;
-  material::Material mat{mo.method == "fem" ? material::law_from_name(in.law) : material::Law::kLinear, in.young,
-                         in.poisson, material::plane_from_name(in.plane), in.thickness};
-  calibrate::CalibratedModel model = calibrate::calibrate_model(io::read_mesh(in.mesh_path, ro), mat, mo);
+  calibrate::ModelOptions mo = calibration_settings(in).model;
+  for (const std::string& text : in.materials) mo.regions.push_back(calibrate::parse_region_material(text));
+  const mesh::Mesh mesh = io::read_mesh(in.mesh_path, ro);
+  const auto [young, poisson] = calibrate::unlisted_elasticity(mesh, mo.regions, in.young, in.poisson);
+  material::Material mat{mo.method == "fem" ? material::law_from_name(in.law) : material::Law::kLinear, young, poisson,
+                         material::plane_from_name(in.plane), in.thickness};
+  calibrate::CalibratedModel model = calibrate::calibrate_model(mesh, mat, mo);
   if (!model.meshing.empty()) std::fprintf(stderr, "hooke: tetrahedralized: %s\n", model.meshing.c_str());
   if (!model.choice.empty()) std::fprintf(stderr, "hooke: %s\n", model.choice.c_str());  // what --method auto picked
   return model;

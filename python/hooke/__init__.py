@@ -98,7 +98,7 @@ min_dihedral, slivers, seconds, summary, ...).
 """
 
 
-def calibrate(mesh, material, method=None, tetrahedralize=None, **options):
+def calibrate(mesh, material, method=None, tetrahedralize=None, materials=None, **options):
     if not isinstance(mesh, Mesh):
         raise TypeError("calibrate: mesh must be a hooke.Mesh")
     if not isinstance(material, Material):
@@ -107,7 +107,13 @@ def calibrate(mesh, material, method=None, tetrahedralize=None, **options):
         options["method"] = method
     for key, value in (tetrahedralize or {}).items():  # the tet keywords, also accepted grouped in a dict
         options.setdefault(key, value)
-    model = _hooke._calibrate(mesh, material, options)
+    regions = []
+    for region, value in (materials or {}).items():  # {region: (E, nu)} or {region: hooke.Material}
+        if isinstance(value, Material):
+            value = (value.E, value.nu)
+        young, poisson = value
+        regions.append((int(region), float(young), float(poisson)))
+    model = _hooke._calibrate(mesh, material, options, regions)
     for w in model.warnings:
         _warnings.warn(w, ValidityWarning, stacklevel=2)
     return model
@@ -119,6 +125,8 @@ m for 2D meshes), as `hooke calibrate` does. method="auto" (the default) picks t
 for the mesh's element kind and nu; the model's .method is the one picked and .choice says why. With strain_range > 0
 the springs' and volume terms' large-strain law is fitted to the FEM of `law` up to that strain
 (docs/methods/large_strain.md); with certify=True the model's .certificate holds its measured error against FEM.
+materials={region: (E, nu)} (or {region: hooke.Material}) gives the elements of those regions (mesh.region) their own
+E and nu, as `--material REGION=E,NU` does; `material` is then the other elements' (docs/regions.md).
 
 Keywords (each one of hooke.settings("calibrate"), unknown ones refused; `tetrahedralize` may group the tet keywords
 in a dict):

@@ -15,7 +15,7 @@ def solve(mesh, material, load="stretch", strain=None, traction=None):
     Returns (positions (N, dim) in m, hooke.SolveReport); raises hooke.SolverFailure (with .report) unless it
     converged.
     """
-    model = _hooke._calibrate(mesh, material, {"method": "fem"})
+    model = _hooke._calibrate(mesh, material, {"method": "fem"}, [])
     problem = _hooke.Problem(model)
     problem.apply_load(load, traction=traction, strain=strain)
     if material.law == "linear":

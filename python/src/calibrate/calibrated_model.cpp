@@ -36,6 +36,16 @@ void define_calibrated_model(py::module_& m) {
       .def_readonly("mesh", &CalibratedModel::mesh, py::return_value_policy::reference_internal, "the rest mesh (m)")
       .def_readonly("material", &CalibratedModel::material, "the material it was calibrated for")
       .def_readonly("density", &CalibratedModel::density, "kg/m^3, what the masses were made from")
+      .def_property_readonly(
+          "regions",
+          [](const CalibratedModel& model) {
+            py::dict out;
+            for (const calibrate::RegionMaterial& r : model.regions)
+              out[py::int_(r.region)] = py::make_tuple(r.youngs_modulus, r.poisson_ratio);
+            return out;
+          },
+          "{region: (E in Pa, nu)} of the element regions with their own material (mesh.region); the other "
+          "elements have .material's. Empty for one material.")
       .def_readonly("warnings", &CalibratedModel::warnings, "the method's validity warnings (list of str)")
       .def_property_readonly(
           "pairs",

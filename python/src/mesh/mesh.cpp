@@ -60,6 +60,14 @@ void define_mesh(py::module_& m) {
       .def_property_readonly(
           "kind", [](const mesh::Mesh& mesh) { return std::string(element_kind_name(mesh.kind)); },
           "\'triangle\', \'quad\', \'tet\' or \'surface-triangle\'")
+      .def_property_readonly(
+          "region",
+          [](py::object self) {
+            auto& mesh = self.cast<mesh::Mesh&>();
+            return flat_view(mesh.region.data(), mesh.region.size(), self, true);
+          },
+          "(M,) region tag per element (Gmsh physical group, VTU `region`, TetGen attribute; 0 where the file has "
+          "none): a writable view, so that elements can be put in regions before calibrate(materials=...)")
       .def_property_readonly("dim", &mesh::Mesh::dim, "coordinate dimension, 2 or 3")
       .def_property_readonly("node_count", &mesh::Mesh::node_count, "number of nodes N")
       .def_property_readonly("element_count", &mesh::Mesh::element_count, "number of elements M")

@@ -18,7 +18,9 @@ void ProblemData::apply_load(model::LoadKind kind, double traction, double strai
   if (strain != 0.0 && !(strain > 0.0 && std::isfinite(strain)))
     throw InvalidArgument("apply_load: the strain must be a finite number > 0");
   if (!std::isfinite(traction)) throw InvalidArgument("apply_load: the traction must be finite");
-  const double t = strain > 0.0 ? solve::traction_for_strain(model.mesh, {model.material}, kind, strain) : traction;
+  const double t = strain > 0.0
+                       ? solve::traction_for_strain(model.mesh, calibrate::element_materials(model), kind, strain)
+                       : traction;
   model::apply(model::make_load_case(model.mesh, kind, t, model.material.thickness), problem);
 }
 

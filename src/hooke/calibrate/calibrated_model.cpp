@@ -9,6 +9,10 @@
 
 namespace hooke::calibrate {
 
+std::vector<material::Material> element_materials(const CalibratedModel& model) {
+  return element_materials(model.mesh, model.material, model.regions);
+}
+
 namespace {
 constexpr NameTable<ModelKind, 4> kKinds{"model kind",
                                          {{{ModelKind::kSprings, "springs"},
@@ -126,6 +130,13 @@ void validate_model(const CalibratedModel& m, const ModelRejection& reject) {
     c.fail("masses", "has " + std::to_string(m.masses.size() / std::max(d, 1)) + " entries, the model has " +
                          std::to_string(n) + " nodes");
   for (int i = 0; i < n; ++i) c.positive(entry("masses", i), m.masses(d * i), "mass");
+  if (!m.regions.empty()) {  // each listed region's material in range, listed once, and present in the mesh
+    try {
+      element_materials(m);
+    } catch (const Error& e) {
+      c.fail("regions", e.what());
+    }
+  }
   const SpringModel& s = m.springs;
   // A law's exponent of a few units already changes a term's stiffness at 50 % strain by orders of magnitude.
   for (const auto& [name, q] : {std::pair{"term_law.spring_exponent", s.spring_exponent},

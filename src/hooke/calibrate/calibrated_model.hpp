@@ -3,6 +3,7 @@
 /// It holds everything the term blocks are built from, so that a model made here, in another program or by hand
 /// runs in every solver and comparison (docs/architecture.md: the model is data).
 #include <functional>
+#include <hooke/calibrate/region_materials.hpp>
 #include <hooke/calibrate/spring_model.hpp>
 #include <hooke/material/material.hpp>
 #include <hooke/mesh/mesh.hpp>
@@ -59,23 +60,30 @@ struct CertificateCase {
 
 /// A model ready to be built into term blocks (build_model) or written to a file (write_model).
 struct CalibratedModel {
-  std::string method;                   ///< stable name: a calibration method, "surface", "fem", or what a file says
-  std::string equation;                 ///< where its constants come from ("Lloyd et al. 2007, Eq. 12-13")
-  std::string choice;                   ///< why `method` was chosen, for "auto" (calibrate::choose_method); else empty
-  std::string meshing;                  ///< how `mesh` was made from a closed surface (TetrahedralizeReport::summary)
-  mesh::Mesh mesh;                      ///< rest nodes (m) and the elements the model stands for
-  material::Material material;          ///< E (Pa), nu, thickness (m, 2D); the law is used by "fem" only
-  double density = 1000.0;              ///< kg/m^3, what the masses were made from
-  VecX masses;                          ///< lumped mass per DOF, kg (dim x #V, > 0)
-  SpringModel springs;                  ///< springs and tet volume terms (empty for "fem")
-  std::optional<SurfaceTerms> surface;  ///< anchors and volume penalty of the surface model
-  std::vector<std::string> warnings;    ///< the method's validity warnings (calibrate::validity_warnings)
+  std::string method;           ///< stable name: a calibration method, "surface", "fem", or what a file says
+  std::string equation;         ///< where its constants come from ("Lloyd et al. 2007, Eq. 12-13")
+  std::string choice;           ///< why `method` was chosen, for "auto" (calibrate::choose_method); else empty
+  std::string meshing;          ///< how `mesh` was made from a closed surface (TetrahedralizeReport::summary)
+  mesh::Mesh mesh;              ///< rest nodes (m) and the elements the model stands for
+  material::Material material;  ///< E (Pa), nu, thickness (m, 2D); the law is used by "fem" only
+  /// E and nu of the listed element regions (mesh.region); the other elements have `material`'s. Empty: one
+  /// material for the whole body (calibrate::element_materials; docs/regions.md).
+  std::vector<RegionMaterial> regions;
+  double density = 1000.0;                   ///< kg/m^3, what the masses were made from
+  VecX masses;                               ///< lumped mass per DOF, kg (dim x #V, > 0)
+  SpringModel springs;                       ///< springs and tet volume terms (empty for "fem")
+  std::optional<SurfaceTerms> surface;       ///< anchors and volume penalty of the surface model
+  std::vector<std::string> warnings;         ///< the method's validity warnings (calibrate::validity_warnings)
   std::vector<CertificateCase> certificate;  ///< measured error against FEM, when certified
 };
 
 /// The kind of `model`: kSurface with surface terms, else its method's kind (model_kind_of_method), kFile for a
 /// method hooke does not know (an identified or hand-tuned model's).
 ModelKind model_kind(const CalibratedModel& model);
+
+/// The material of each of `model`'s elements ({model.material} when it has no regions): what its FEM reference
+/// and a recalibration take. @throws InvalidArgument as element_materials
+std::vector<material::Material> element_materials(const CalibratedModel& model);
 
 /// Checks that `model` is consistent: node and element indices in range, finite positions, k >= 0, l0 > 0,
 /// volume terms on tets with V0 > 0 and k_V >= 0, masses > 0,

@@ -74,6 +74,8 @@ CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material
   if (!(options.density > 0.0) || !std::isfinite(options.density))
     throw InvalidArgument("the density must be a positive number of kg/m^3");
   const ModelKind kind = model_kind_of_method(options.method);
+  if (kind == ModelKind::kSurface && !options.regions.empty())
+    throw InvalidArgument("the surface model has one material for the whole body: drop --material REGION=E,NU");
   if (mesh.kind == mesh::ElementKind::kSurfaceTriangle && kind != ModelKind::kSurface) {
     mesh::TetrahedralizeReport report;
     const mesh::Mesh tets = io::tetrahedralize(mesh, options.tetrahedralize, &report);
@@ -81,8 +83,12 @@ CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material
     out.meshing = report.summary();
     return out;
   }
+  const std::vector<material::Material> materials = element_materials(mesh, material, options.regions);
   if (options.method == "auto") {
-    const MethodChoice choice = choose_method(mesh.kind, material);
+    material::Material hardest = materials.front();  // the largest nu of the body's materials
+    for (const material::Material& m : materials)
+      if (m.poisson_ratio > hardest.poisson_ratio) hardest = m;
+    const MethodChoice choice = choose_method(mesh.kind, hardest);
     log(LogLevel::kInfo, choice.reason);
     ModelOptions chosen = options;
     chosen.method = choice.method;
@@ -97,8 +103,8 @@ CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material
     out.mesh = mesh;
     if (kind == ModelKind::kSprings) {
       const Method method = method_from_name(options.method);
-      out.warnings = validity_warnings(mesh, {material}, method);
-      out.springs = calibrate(mesh, {material}, method);
+      out.warnings = validity_warnings(mesh, materials, method);
+      out.springs = calibrate(mesh, materials, method);
       out.springs.spring_exponent = options.spring_exponent;
       out.springs.volume_exponent = options.volume_exponent;
     }
@@ -107,6 +113,7 @@ CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material
   out.method = options.method;
   out.equation = method_equation(options.method);
   out.material = material;
+  out.regions = options.regions;
   out.density = options.density;
   return out;
 }
@@ -117,7 +124,7 @@ BuiltModel build_model(const CalibratedModel& m) {
   BuiltModel out;
   out.model = std::make_shared<model::Model>(d, Eigen::Map<const VecX>(m.mesh.nodes.data(), m.mesh.nodes.size()));
   if (model_kind(m) == ModelKind::kFem) {
-    out.model = fem::elastic_model(m.mesh, {m.material});
+    out.model = fem::elastic_model(m.mesh, element_materials(m));
     return out;
   }
   add_spring_terms(*out.model, m.springs);

@@ -24,6 +24,9 @@ struct ModelOptions {
   /// Seth-Hill exponents in [-8, 8], 1 (default) Hookean springs and quadratic volume terms.
   double spring_exponent = 1.0;
   double volume_exponent = 1.0;
+  /// E and nu per element region (`--material REGION=E,NU`): every method's terms element by element with that
+  /// element's material; the other regions take the material given to calibrate_model. Not for "surface".
+  std::vector<RegionMaterial> regions;
 };
 
 /// Every name ModelOptions::method accepts: "auto", the calibration methods, then "surface" and "fem".
@@ -38,8 +41,11 @@ std::string method_equation(std::string_view method);
 /// model's method is the one chosen and its `choice` says why (also logged at LogLevel::kInfo).
 /// A closed surface-triangle mesh given to any method but "surface" is tetrahedralized first with
 /// options.tetrahedralize, and the model's `meshing` says how (its mesh is then the tets).
+/// With options.regions, the listed element regions take their own E and nu (element_materials), and "auto" picks
+/// for the largest nu among the materials (the hardest case of its measured table).
 /// @param mesh  validated mesh, m; a closed surface-triangle mesh for "surface"
-/// @throws InvalidArgument for an unknown method or one that does not apply to the mesh, InvalidMaterial,
+/// @throws InvalidArgument for an unknown method or one that does not apply to the mesh, a region the mesh lacks,
+///   regions with "surface", InvalidMaterial,
 ///   InvalidMesh (the surface model's checks)
 CalibratedModel calibrate_model(const mesh::Mesh& mesh, const material::Material& material,
                                 const ModelOptions& options);

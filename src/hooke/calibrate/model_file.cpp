@@ -85,9 +85,21 @@ ordered model_document(const CalibratedModel& m) {
                    {"plane", std::string(material::plane_name(mat.plane))},
                    {"thickness", mat.thickness},
                    {"density", m.density}};
+  if (!m.regions.empty()) {  // the tissues' own E and nu (docs/regions.md)
+    ordered regions = ordered::array();
+    for (const RegionMaterial& r : m.regions)
+      regions.push_back(
+          {{"region", r.region}, {"youngs_modulus", r.youngs_modulus}, {"poisson_ratio", r.poisson_ratio}});
+    j["regions"] = std::move(regions);
+  }
   j["element_kind"] = std::string(mesh::element_kind_name(m.mesh.kind));
   j["nodes"] = rows_of(m.mesh.nodes);
   j["elements"] = rows_of(m.mesh.elements);
+  if (m.mesh.region.size() == m.mesh.element_count() && (m.mesh.region.array() != 0).any()) {
+    ordered tags = ordered::array();
+    for (Eigen::Index e = 0; e < m.mesh.region.size(); ++e) tags.push_back(m.mesh.region(e));
+    j["element_regions"] = std::move(tags);
+  }
   ordered masses = ordered::array();
   for (int i = 0; i < m.mesh.node_count(); ++i) masses.push_back(m.masses(d * i));
   j["masses"] = std::move(masses);
@@ -160,7 +172,7 @@ void write_block(std::ostream& out, const ordered& block, int indent) {
     first = false;
     if (value.is_object() && (key == "surface" || key == "volume_penalty")) {
       write_block(out, value, indent + 2);
-    } else if (value.is_array() && !value.empty() && key != "centre") {
+    } else if (value.is_array() && !value.empty() && key != "centre" && key != "element_regions") {
       out << '[';
       for (size_t k = 0; k < value.size(); ++k) {
         out << (k ? ",\n" : "\n") << pad << "  ";
@@ -471,10 +483,10 @@ CalibratedModel model_from_json(const json& j, const std::string& source) {
   if (!version.is_number_integer() || version.get<std::int64_t>() != kModelSchemaVersion)
     r.fail("schema_version",
            "is " + version.dump() + "; this hooke reads schema version " + std::to_string(kModelSchemaVersion));
-  r.only_keys(j, "",
-              {"format",      "schema_version", "hooke_version", "method",       "equation", "method_choice", "meshing",
-               "source_mesh", "units",          "material",      "element_kind", "nodes",    "elements",      "masses",
-               "springs",     "volume_terms",   "term_law",      "surface",      "warnings", "certificate"});
+  r.only_keys(j, "", {"format",   "schema_version", "hooke_version", "method",         "equation",     "method_choice",
+                      "meshing",  "source_mesh",    "units",         "material",       "element_kind", "nodes",
+                      "elements", "masses",         "springs",       "volume_terms",   "term_law",     "surface",
+                      "warnings", "certificate",    "regions",       "element_regions"});
   if (j.contains("units")) {
     const json& u = j["units"];
     r.only_keys(u, "units", {"length", "stiffness", "mass", "volume_stiffness"});
@@ -497,6 +509,27 @@ CalibratedModel model_from_json(const json& j, const std::string& source) {
   RowMatXi elements =
       read_indices(r, r.array(r.key(j, "", "elements"), "elements"), "elements", mesh::nodes_per_element(kind), n);
   m.mesh = mesh::make_mesh(kind, std::move(nodes), std::move(elements), source);
+  if (j.contains("element_regions")) {
+    const json& tags = r.array(j["element_regions"], "element_regions", m.mesh.element_count());
+    for (size_t e = 0; e < tags.size(); ++e) {
+      if (!tags[e].is_number_integer() || std::abs(tags[e].get<std::int64_t>()) > 2147483647)
+        r.fail(Reader::at("element_regions", e), "a region tag must be an integer, not " + tags[e].dump());
+      m.mesh.region(static_cast<Eigen::Index>(e)) = static_cast<int>(tags[e].get<std::int64_t>());
+    }
+  }
+  if (j.contains("regions")) {
+    const json& regions = r.array(j["regions"], "regions");
+    for (size_t k = 0; k < regions.size(); ++k) {
+      const std::string at = Reader::at("regions", k);
+      r.only_keys(regions[k], at, {"region", "youngs_modulus", "poisson_ratio"});
+      const json& tag = r.key(regions[k], at, "region");
+      if (!tag.is_number_integer() || std::abs(tag.get<std::int64_t>()) > 2147483647)
+        r.fail(at + ".region", "a region tag must be an integer, not " + tag.dump());
+      m.regions.push_back({static_cast<int>(tag.get<std::int64_t>()),
+                           r.number(r.key(regions[k], at, "youngs_modulus"), at + ".youngs_modulus"),
+                           r.number(r.key(regions[k], at, "poisson_ratio"), at + ".poisson_ratio")});
+    }
+  }
   if (m.mesh.element_count() > 0) mesh::validate(m.mesh, {.fix_orientation = false});  // names the element
   const json& masses = r.array(r.key(j, "", "masses"), "masses", n);
   const int d = mesh::dimension(kind);

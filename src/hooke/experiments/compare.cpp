@@ -216,7 +216,7 @@ std::vector<Reference> fem_references(const calibrate::CalibratedModel& model,
                                       const std::vector<model::LoadKind>& kinds, const CompareOptions& options) {
   require_node_model(model);
   std::vector<Reference> out;
-  for (auto& [load, fem] : loaded_references(model.mesh, {model.material}, kinds, options))
+  for (auto& [load, fem] : loaded_references(model.mesh, calibrate::element_materials(model), kinds, options))
     out.push_back({std::move(load), std::move(fem.result), std::move(fem.reaction)});
   return out;
 }

@@ -58,6 +58,7 @@ std::vector<ContactPressRow> compare_under_contact(const calibrate::CalibratedMo
   calibrate::ModelOptions fem_options;
   fem_options.method = calibrate::model_kind_name(calibrate::ModelKind::kFem);
   fem_options.density = model.density;
+  fem_options.regions = model.regions;
   const calibrate::CalibratedModel fem = calibrate::calibrate_model(model.mesh, material, fem_options);
   const auto f = press(fem, tool, poses, activation, "the FEM (" + std::string(material::law_name(o.reference)) + ")");
   const auto s = press(model, tool, poses, activation, "the " + model.method + " model");

@@ -163,6 +163,7 @@ calibrate::CalibratedModel choose_for_range(const calibrate::CalibratedModel& pi
       calibrate::ModelOptions mo;
       mo.method = method;
       mo.density = picked.density;
+      mo.regions = picked.regions;
       candidate = calibrate::calibrate_model(picked.mesh, picked.material, mo);
       candidate.meshing = picked.meshing;
     }

@@ -530,6 +530,7 @@ ProbeEquilibrium fem_probe_equilibrium(const calibrate::CalibratedModel& cm, mat
   calibrate::ModelOptions o;
   o.method = calibrate::model_kind_name(calibrate::ModelKind::kFem);
   o.density = cm.density;
+  o.regions = cm.regions;  // the same tissues
   const calibrate::CalibratedModel fem = calibrate::calibrate_model(cm.mesh, mat, o);
   return probe_equilibrium(fem, clamped, grabbed, targets, gravity);
 }
