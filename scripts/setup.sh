@@ -5,6 +5,8 @@
 #              and Dask distributed with pandas (hooke batch, studies beyond one machine)
 #              and the real scanned surfaces the meshing tests use (CGAL's sample data in libcgal-demo, not linked)
 #              and TetGen's program, run on files by --mesher tetgen (AGPL-3, never linked)
+#              and ITK (label images: NIfTI, NRRD, MetaImage) with its example data (a real brain segmentation the
+#              label-image tests use)
 #   --meshing  also gmsh, needed only to regenerate the committed meshes in data/meshes
 #   --bench    also Bullet, a benchmark peer of bench/ (the other, VegaFEM, needs only g++: scripts/build_vegafem.sh)
 set -euo pipefail
@@ -18,6 +20,7 @@ core=(
   python3-distributed python3-pandas
   libglfw3-dev libimgui-dev libstb-dev xvfb xauth
   libcgal-demo tetgen
+  libinsighttoolkit5-dev insighttoolkit5-examples zlib1g-dev
 )
 extra=()
 for arg in "$@"; do

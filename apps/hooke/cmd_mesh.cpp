@@ -1,9 +1,11 @@
-// hooke mesh info MESH | convert IN OUT | tetrahedralize SURFACE -o VOLUME: inspect, convert and fill meshes.
+// hooke mesh info MESH | convert IN OUT | tetrahedralize SURFACE -o VOLUME | from-image LABELS -o VOLUME: inspect,
+// convert and fill meshes.
 #include <algorithm>
 #include <cstdio>
 #include <hooke/calibrate/model_settings.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/units.hpp>
+#include <hooke/image/label_mesh.hpp>
 #include <hooke/io/mesh_io.hpp>
 #include <hooke/io/mesher.hpp>
 #include <hooke/mesh/measure.hpp>
@@ -13,6 +15,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 
@@ -22,7 +25,9 @@ namespace {
 struct MeshOptions {
   std::string input, output, unit = "m", msh_version = "4.1";
   bool binary = false;
-  GivenSettings tetrahedralize;  ///< calibrate::model_settings() rows of settings::kMesh
+  GivenSettings tetrahedralize;   ///< calibrate::model_settings() rows of settings::kMesh
+  std::vector<int> labels;        ///< from-image: the body's labels (empty: every label but 0)
+  image::LabelMeshOptions image;  ///< from-image: smoothing and specks
 };
 
 int run_info(const MeshOptions& o) {
@@ -103,6 +108,36 @@ int run_tetrahedralize(const MeshOptions& o) {
   return 0;
 }
 
+int run_from_image(const MeshOptions& o) {
+  image::LabelMeshOptions lo = o.image;
+  lo.labels = o.labels;
+  lo.tetrahedralize = tetrahedralize_options(o.tetrahedralize, 1.0);
+  const image::LabelImage img = image::read_label_image(o.input);
+  const image::LabelMesh m = image::labels_to_mesh(img, lo);
+  io::WriteOptions wo;
+  wo.binary = o.binary;
+  io::write_mesh(o.output, m.tets, wo);
+  const mesh::TetrahedralizeReport& r = m.meshing;
+  std::printf("hooke mesh from-image: %s\n  image       %d x %d x %d voxels of %.4g x %.4g x %.4g mm\n",
+              o.input.c_str(), img.size[0], img.size[1], img.size[2], 1e3 * img.spacing(0), 1e3 * img.spacing(1),
+              1e3 * img.spacing(2));
+  std::printf("  surface     %d triangles (%d coincident nodes welded, %d specks dropped: %.4g mm^3)\n",
+              m.surface_triangles, m.welded_nodes, m.dropped_pieces, 1e9 * m.dropped_volume);
+  std::printf("  tets        %d nodes, %d tets (%s, size %.4g m), volume %+.3f %% of the surface's\n", r.nodes, r.tets,
+              r.backend.c_str(), r.options.max_size, 100.0 * r.volume_error);
+  for (const image::LabelReport& l : m.labels)
+    std::printf("  label %-5d %lld voxels (%.6g m^3), %d tets (%.6g m^3, %+.2f %%), smallest dihedral %.2f deg\n",
+                l.label, static_cast<long long>(l.voxels), l.voxel_volume, l.tets, l.volume, 100.0 * l.volume_error,
+                l.min_dihedral);
+  if (m.unlabelled_tets > 0)
+    std::printf("  unlabelled  %d tets had no sample point in a selected label (given label %d)\n", m.unlabelled_tets,
+                m.labels.front().label);
+  std::printf("  quality     radius ratio min %.4f, mean %.4f; %d slivers (< %.2g)\n", r.quality.min_radius_ratio,
+              r.quality.mean_radius_ratio, r.slivers, mesh::kSliverRadiusRatio);
+  std::printf("  time        %.2f s\n  wrote       %s\n", m.seconds, o.output.c_str());
+  return 0;
+}
+
 }  // namespace
 
 Action add_mesh_command(CLI::App& app) {
@@ -127,8 +162,33 @@ Action add_mesh_command(CLI::App& app) {
   tet->add_flag("--binary", o->binary, "Binary .msh");
   add_settings(tet, settings::describe(calibrate::model_settings(), settings::kMesh), o->tetrahedralize,
                "Closed surface to tets");
-  return [o, info, tet] {
+  CLI::App* from_image = cmd->add_subcommand(
+      "from-image",
+      "Mesh the labels of a segmentation (.nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd; spacing in mm) into tets "
+      "whose region is their label, with a report per label (docs/images.md)");
+  from_image->add_option("image", o->input, "Label image")->required();
+  from_image->add_option("-o,--output", o->output, "Tet mesh to write (.msh, .vtu, .node/.ele): region = label")
+      ->required();
+  from_image->add_option("--labels", o->labels, "The body's labels, comma-separated (default: every label but 0)")
+      ->delimiter(',');
+  from_image
+      ->add_option("--smoothing", o->image.smoothing,
+                   "Gaussian sigma before the surface is extracted, in (averaged) voxels")
+      ->capture_default_str();
+  from_image
+      ->add_option("--surface-smoothing", o->image.surface_smoothing,
+                   "Taubin smoothing iterations of the extracted surface")
+      ->capture_default_str();
+  from_image
+      ->add_option("--speck-fraction", o->image.speck_fraction,
+                   "Drop separate pieces enclosing less than this fraction of the largest one's volume")
+      ->capture_default_str();
+  from_image->add_flag("--binary", o->binary, "Binary .msh");
+  add_settings(from_image, settings::describe(calibrate::model_settings(), settings::kMesh), o->tetrahedralize,
+               "Surface to tets");
+  return [o, info, tet, from_image] {
     if (info->parsed()) return run_info(*o);
+    if (from_image->parsed()) return run_from_image(*o);
     return tet->parsed() ? run_tetrahedralize(*o) : run_convert(*o);
   };
 }

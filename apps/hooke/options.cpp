@@ -8,6 +8,7 @@
 #include <hooke/calibrate/region_materials.hpp>
 #include <hooke/core/error.hpp>
 #include <hooke/core/units.hpp>
+#include <hooke/image/label_mesh.hpp>
 #include <hooke/io/mesh_io.hpp>
 #include <hooke/solve/simulator_settings.hpp>
 
@@ -114,6 +115,7 @@ calibrate::CalibratedModel load_model(const ModelSource& source) {
 }
 
 int parse_and_run(CLI::App& app, int argc, char** argv, const char* program, const std::function<int()>& action) {
+  image::register_label_image_reader();  // every command that reads a mesh takes a label image
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -2,11 +2,13 @@
 #include <bindings.hpp>
 #include <hooke/core/log.hpp>
 #include <hooke/core/version.hpp>
+#include <hooke/image/label_mesh.hpp>
 #include <string>
 
 PYBIND11_MODULE(_hooke, m) {
   m.doc() = "hooke: mass-spring models calibrated from Young's modulus and Poisson's ratio (compiled core)";
   m.attr("__version__") = std::string(hooke::kVersion);
+  hooke::image::register_label_image_reader();  // hooke.read_mesh and every mesh argument take label images
   hooke::python::define_error(m);
   hooke::python::define_settings(m);
   hooke::python::define_mesh(m);

@@ -8,17 +8,14 @@
 #include <hooke/io/vtu.hpp>
 #include <hooke/mesh/generators.hpp>
 #include <support/meshes.hpp>
+#include <support/scratch.hpp>
 
 namespace hooke::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "hooke_io_tests";
-  fs::create_directories(dir);
-  return dir / name;
-}
+fs::path scratch(const std::string& name) { return test::scratch_file("hooke_io_tests", name); }
 
 void expect_same(const mesh::Mesh& a, const mesh::Mesh& b, double tol, bool regions = true) {
   ASSERT_EQ(a.kind, b.kind);

@@ -6,22 +6,57 @@
 #include <hooke/io/stl.hpp>
 #include <hooke/io/tetgen.hpp>
 #include <hooke/io/vtu.hpp>
+#include <mutex>
+#include <optional>
+#include <vector>
 
 namespace hooke::io {
 namespace {
 
 using detail::lower_extension;
 
+std::mutex& readers_mutex() {
+  static std::mutex m;
+  return m;
+}
+std::vector<MeshReader>& readers() {
+  static std::vector<MeshReader> r;
+  return r;
+}
+
 [[noreturn]] void unknown(const std::filesystem::path& path) {
+  std::string more;
+  {
+    const std::lock_guard lock(readers_mutex());
+    for (const MeshReader& r : readers()) more += ", " + r.extensions;
+  }
   throw InvalidArgument("cannot tell the format of '" + path.string() +
-                        "' from its extension (use .msh, .vtu, .node/.ele/.face, .obj, .off or .stl)");
+                        "' from its extension (use .msh, .vtu, .node/.ele/.face, .obj, .off, .stl" + more + ")");
 }
 
 }  // namespace
 
+void register_mesh_reader(MeshReader reader) {
+  const std::lock_guard lock(readers_mutex());
+  for (const MeshReader& r : readers())
+    if (r.extensions == reader.extensions) return;
+  readers().push_back(std::move(reader));
+}
+
 mesh::Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options) {
   const std::string ext = lower_extension(path);
   mesh::Mesh m;
+  std::optional<MeshReader> registered;  // a copy: another thread may register meanwhile
+  {
+    const std::lock_guard lock(readers_mutex());
+    for (const MeshReader& r : readers())
+      if (r.accepts(path)) registered = r;
+  }
+  if (registered) {
+    m = registered->read(path);
+    if (options.validate) mesh::validate(m, options.validation);
+    return m;
+  }
   if (ext == ".msh")
     m = read_msh(path);
   else if (ext == ".vtu")

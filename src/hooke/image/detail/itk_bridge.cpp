@@ -1,0 +1,242 @@
+// ITK behind plain types (itk_bridge.hpp). The image IO classes are chosen by extension: no factory registration, no
+// ITK_USE_FILE. No hooke header that includes Eigen may be included here.
+#include <itkBinaryMask3DMeshSource.h>
+#include <itkBinaryThresholdImageFilter.h>
+#include <itkImage.h>
+#include <itkImageFileReader.h>
+#include <itkImageFileWriter.h>
+#include <itkImageIOBase.h>
+#include <itkMesh.h>
+#include <itkMetaImageIO.h>
+#include <itkNiftiImageIO.h>
+#include <itkNrrdImageIO.h>
+#include <itkSmoothingRecursiveGaussianImageFilter.h>
+#include <zlib.h>
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <hooke/core/error.hpp>
+#include <hooke/image/detail/itk_bridge.hpp>
+#include <system_error>
+#include <vector>
+
+namespace hooke::image::detail {
+namespace {
+
+using Labels = itk::Image<std::int32_t, 3>;
+using Real = itk::Image<float, 3>;
+using Mask = itk::Image<unsigned char, 3>;
+
+std::string lower_name(const std::filesystem::path& path) {
+  std::string name = path.filename().string();
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return name;
+}
+
+itk::ImageIOBase::Pointer io_for(const std::filesystem::path& path) {
+  const std::string name = lower_name(path);
+  auto ends = [&](const char* e) { return name.size() > std::string(e).size() && name.ends_with(e); };
+  if (ends(".nii") || ends(".nii.gz")) return itk::NiftiImageIO::New().GetPointer();
+  if (ends(".nrrd") || ends(".nhdr")) return itk::NrrdImageIO::New().GetPointer();
+  if (ends(".mha") || ends(".mhd")) return itk::MetaImageIO::New().GetPointer();
+  throw InvalidArgument("'" + path.string() + "' is not a label image (use .nii, .nii.gz, .nrrd, .nhdr, .mha or .mhd)");
+}
+
+[[noreturn]] void refuse(const std::filesystem::path& path, const std::string& why) {
+  throw ParseError::at_entry(path.string(), "header", why);
+}
+
+// The first line of an ITK exception's description (without ITK's own source file and line).
+std::string reason(const itk::ExceptionObject& e) {
+  std::string d = e.GetDescription();
+  if (d.empty()) d = e.what();
+  return d.substr(0, d.find('\n'));
+}
+
+bool integer_component(itk::IOComponentEnum c) {
+  using C = itk::IOComponentEnum;
+  return c == C::UCHAR || c == C::CHAR || c == C::USHORT || c == C::SHORT || c == C::UINT || c == C::INT ||
+         c == C::ULONG || c == C::LONG || c == C::ULONGLONG || c == C::LONGLONG;
+}
+
+template <typename Image>
+void set_grid(Image* image, const Grid& g) {
+  typename Image::RegionType region;
+  typename Image::SpacingType spacing;
+  typename Image::PointType origin;
+  typename Image::DirectionType direction;
+  for (unsigned a = 0; a < 3; ++a) {
+    region.SetSize(a, static_cast<itk::SizeValueType>(g.size[a]));
+    spacing[a] = g.spacing[a];
+    origin[a] = g.origin[a];
+    for (unsigned b = 0; b < 3; ++b) direction[b][a] = g.direction[3 * b + a];
+  }
+  image->SetRegions(region);
+  image->SetSpacing(spacing);
+  image->SetOrigin(origin);
+  image->SetDirection(direction);
+  image->Allocate();
+}
+
+// ITK's MetaImage reader prints "data not read completely" and returns a half-read image for a truncated
+// uncompressed .mha: such a file (its data LOCAL, after the header line "ElementDataFile = LOCAL") must hold every
+// voxel's bytes.
+void require_local_data(const std::filesystem::path& path, std::uint64_t bytes) {
+  const std::string name = lower_name(path);
+  if (name.ends_with(".nii") || name.ends_with(".nii.gz")) {
+    // NIfTI's reader does not notice a short (or short once inflated) file either: the data follows a header of at
+    // least 348 bytes, so the inflated file must be at least that much longer than the voxels.
+    gzFile in = gzopen(path.c_str(), "rb");
+    if (!in) refuse(path, "cannot be opened by zlib");
+    std::vector<char> buffer(1 << 16);
+    std::uint64_t total = 0;
+    int got = 0;
+    while ((got = gzread(in, buffer.data(), static_cast<unsigned>(buffer.size()))) > 0)
+      total += static_cast<std::uint64_t>(got);
+    int status = Z_OK;
+    gzerror(in, &status);
+    gzclose(in);
+    if (got < 0 || (status != Z_OK && status != Z_STREAM_END) || total < 348 + bytes)
+      refuse(path, "the file ends before its " + std::to_string(bytes) + " bytes of voxel data");
+    return;
+  }
+  if (!name.ends_with(".mha")) return;
+  std::ifstream in(path, std::ios::binary);
+  std::string head(65536, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  if (head.find("CompressedData = True") != std::string::npos) return;  // zlib reports its own truncation
+  const std::size_t at = head.find("ElementDataFile = LOCAL");
+  if (at == std::string::npos) return;
+  const std::size_t end = head.find('\n', at);
+  std::error_code ec;
+  const std::uint64_t size = std::filesystem::file_size(path, ec);
+  if (end == std::string::npos || ec || size < end + 1 + bytes)
+    refuse(path, "the file ends before its " + std::to_string(bytes) + " bytes of voxel data");
+}
+
+}  // namespace
+
+RawLabels itk_read_labels(const std::filesystem::path& path, std::int64_t max_voxels) {
+  itk::ImageIOBase::Pointer io = io_for(path);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw IoError("cannot open label image '" + path.string() + "'");
+  try {
+    if (!io->CanReadFile(path.c_str())) refuse(path, "not a readable image of its extension's format");
+    io->SetFileName(path.string());
+    io->ReadImageInformation();
+  } catch (const itk::ExceptionObject& e) {
+    refuse(path, reason(e));
+  }
+  const unsigned dims = io->GetNumberOfDimensions();
+  if (dims != 3) refuse(path, "a label image must be 3D, this one has " + std::to_string(dims) + " dimension(s)");
+  if (io->GetNumberOfComponents() != 1)
+    refuse(path, "a label image has one value per voxel, this one has " + std::to_string(io->GetNumberOfComponents()));
+  RawLabels out;
+  std::int64_t voxels = 1;
+  for (unsigned a = 0; a < 3; ++a) {
+    const auto n = static_cast<std::int64_t>(io->GetDimensions(a));
+    if (n < 1 || n > max_voxels) refuse(path, "size " + std::to_string(n) + " along axis " + std::to_string(a));
+    voxels *= n;
+    if (voxels > max_voxels)
+      refuse(path, "more than " + std::to_string(max_voxels) + " voxels (the largest image hooke reads)");
+    out.grid.size[a] = n;
+    out.grid.spacing[a] = io->GetSpacing(a);
+    out.grid.origin[a] = io->GetOrigin(a);
+    const std::vector<double> d = io->GetDirection(a);
+    for (unsigned b = 0; b < 3; ++b) out.grid.direction[3 * b + a] = b < d.size() ? d[b] : 0.0;
+  }
+  const itk::IOComponentEnum component = io->GetComponentType();
+  const bool integer = integer_component(component);
+  require_local_data(path, static_cast<std::uint64_t>(voxels) * io->GetComponentSize());
+  if (!integer && component != itk::IOComponentEnum::FLOAT && component != itk::IOComponentEnum::DOUBLE)
+    refuse(path, "voxel type " + itk::ImageIOBase::GetComponentTypeAsString(component) + " is not a label type");
+  try {
+    out.labels.resize(static_cast<std::size_t>(voxels));
+    if (integer) {
+      auto reader = itk::ImageFileReader<Labels>::New();
+      reader->SetImageIO(io);
+      reader->SetFileName(path.string());
+      reader->Update();
+      const std::int32_t* v = reader->GetOutput()->GetBufferPointer();
+      std::copy(v, v + voxels, out.labels.begin());
+    } else {  // a float image is a label image when every voxel is a whole number (some tools write them so)
+      auto reader = itk::ImageFileReader<itk::Image<double, 3>>::New();
+      reader->SetImageIO(io);
+      reader->SetFileName(path.string());
+      reader->Update();
+      const double* v = reader->GetOutput()->GetBufferPointer();
+      for (std::int64_t n = 0; n < voxels; ++n) {
+        if (!(v[n] == std::round(v[n]) && std::abs(v[n]) < 2147483647.0))
+          refuse(path, "voxel " + std::to_string(n) + " holds " + std::to_string(v[n]) + ", not a label (an integer)");
+        out.labels[static_cast<std::size_t>(n)] = static_cast<std::int32_t>(v[n]);
+      }
+    }
+  } catch (const itk::ExceptionObject& e) {
+    refuse(path, reason(e));
+  } catch (const std::bad_alloc&) {
+    refuse(path, "out of memory reading " + std::to_string(voxels) + " voxels");
+  }
+  return out;
+}
+
+void itk_write_labels(const std::filesystem::path& path, const RawLabels& image) {
+  auto out = Labels::New();
+  set_grid(out.GetPointer(), image.grid);
+  std::copy(image.labels.begin(), image.labels.end(), out->GetBufferPointer());
+  try {
+    auto writer = itk::ImageFileWriter<Labels>::New();
+    writer->SetImageIO(io_for(path));
+    writer->SetFileName(path.string());
+    writer->SetInput(out);
+    writer->SetUseCompression(lower_name(path).ends_with(".gz"));
+    writer->Update();
+  } catch (const itk::ExceptionObject& e) {
+    throw IoError("cannot write label image '" + path.string() + "': " + reason(e));
+  }
+}
+
+RawSurface itk_half_level_surface(const Grid& grid, const std::vector<float>& values, double sigma) {
+  auto image = Real::New();
+  set_grid(image.GetPointer(), grid);
+  std::copy(values.begin(), values.end(), image->GetBufferPointer());
+  Real::Pointer smooth = image;
+  if (sigma > 0.0) {
+    auto gauss = itk::SmoothingRecursiveGaussianImageFilter<Real, Real>::New();
+    gauss->SetInput(image);
+    itk::FixedArray<double, 3> s;
+    for (unsigned a = 0; a < 3; ++a) s[a] = sigma * grid.spacing[a];
+    gauss->SetSigmaArray(s);
+    gauss->Update();
+    smooth = gauss->GetOutput();
+  }
+  auto threshold = itk::BinaryThresholdImageFilter<Real, Mask>::New();
+  threshold->SetInput(smooth);
+  threshold->SetLowerThreshold(0.5f);
+  threshold->SetUpperThreshold(1e30f);
+  threshold->SetInsideValue(1);
+  threshold->SetOutsideValue(0);
+  using Mesh = itk::Mesh<double, 3>;
+  auto cubes = itk::BinaryMask3DMeshSource<Mask, Mesh>::New();
+  cubes->SetInput(threshold->GetOutput());
+  cubes->SetObjectValue(1);
+  cubes->Update();
+  const Mesh* m = cubes->GetOutput();
+  RawSurface out;
+  out.points.resize(m->GetNumberOfPoints());
+  for (auto it = m->GetPoints()->Begin(); it != m->GetPoints()->End(); ++it)
+    for (unsigned a = 0; a < 3; ++a) out.points[it.Index()][a] = it.Value()[a];
+  for (auto it = m->GetCells()->Begin(); it != m->GetCells()->End(); ++it) {
+    const auto* cell = it.Value();
+    if (cell->GetNumberOfPoints() != 3) continue;
+    std::array<int, 3> t{};
+    std::size_t k = 0;
+    for (auto p = cell->PointIdsBegin(); p != cell->PointIdsEnd(); ++p) t[k++] = static_cast<int>(*p);
+    out.triangles.push_back(t);
+  }
+  return out;
+}
+
+}  // namespace hooke::image::detail
