@@ -4,7 +4,7 @@ import pathlib
 import re
 import sys
 
-ORDER = ["core", "mesh", "io", "material", "model", "fem", "springs", "surface", "contact", "calibrate", "solve", "identify", "experiments", "interactive"]
+ORDER = ["core", "mesh", "io", "image", "material", "model", "fem", "springs", "surface", "contact", "calibrate", "solve", "identify", "experiments", "interactive"]
 # calibrate sits below solve: its solves are linear (core's SparseCholesky), and solve::simulate builds models by name.
 # fem, springs and surface are siblings: none may include another.
 SIBLINGS = {"fem", "springs", "surface", "contact"}
