@@ -80,6 +80,19 @@ void set_grid(Image* image, const Grid& g) {
   image->Allocate();
 }
 
+// A header may declare any size; the data behind it cannot hold more than its file's bytes, deflated at most
+// 1032:1 (DEFLATE's limit; gzip, NRRD's gzip and MetaImage's compression all use it). So a 64 KB file never makes
+// ITK allocate gigabytes. (A detached header, .nhdr or .mhd, names its data file elsewhere: not checked here.)
+void require_plausible_size(const std::filesystem::path& path, std::uint64_t bytes) {
+  const std::string name = lower_name(path);
+  if (name.ends_with(".nhdr") || name.ends_with(".mhd")) return;
+  std::error_code ec;
+  const std::uint64_t size = std::filesystem::file_size(path, ec);
+  if (!ec && bytes > 1032 * size + 65536)
+    refuse(path, "declares " + std::to_string(bytes) + " bytes of voxels, more than its " + std::to_string(size) +
+                     " bytes can hold even compressed");
+}
+
 // ITK's MetaImage reader prints "data not read completely" and returns a half-read image for a truncated
 // uncompressed .mha: such a file (its data LOCAL, after the header line "ElementDataFile = LOCAL") must hold every
 // voxel's bytes.
@@ -119,7 +132,11 @@ void require_local_data(const std::filesystem::path& path, std::uint64_t bytes) 
 
 }  // namespace
 
-RawLabels itk_read_labels(const std::filesystem::path& path, std::int64_t max_voxels) {
+namespace {
+
+RawLabels read_labels(const std::filesystem::path& path, std::int64_t max_voxels) {
+  static const bool quiet = (itk::Object::GlobalWarningDisplayOff(), true);  // ITK's warnings go to stdout
+  (void)quiet;
   itk::ImageIOBase::Pointer io = io_for(path);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw IoError("cannot open label image '" + path.string() + "'");
@@ -150,7 +167,9 @@ RawLabels itk_read_labels(const std::filesystem::path& path, std::int64_t max_vo
   }
   const itk::IOComponentEnum component = io->GetComponentType();
   const bool integer = integer_component(component);
-  require_local_data(path, static_cast<std::uint64_t>(voxels) * io->GetComponentSize());
+  const std::uint64_t bytes = static_cast<std::uint64_t>(voxels) * io->GetComponentSize();
+  require_plausible_size(path, bytes);
+  require_local_data(path, bytes);
   if (!integer && component != itk::IOComponentEnum::FLOAT && component != itk::IOComponentEnum::DOUBLE)
     refuse(path, "voxel type " + itk::ImageIOBase::GetComponentTypeAsString(component) + " is not a label type");
   try {
@@ -180,6 +199,24 @@ RawLabels itk_read_labels(const std::filesystem::path& path, std::int64_t max_vo
     refuse(path, "out of memory reading " + std::to_string(voxels) + " voxels");
   }
   return out;
+}
+
+}  // namespace
+
+// Every ITK exception, wherever in the header's analysis or the read it comes from (a mutated header's unknown
+// voxel type makes even GetComponentSize throw), is a refusal naming the file.
+RawLabels itk_read_labels(const std::filesystem::path& path, std::int64_t max_voxels) {
+  try {
+    return read_labels(path, max_voxels);
+  } catch (const Error&) {
+    throw;
+  } catch (const itk::ExceptionObject& e) {
+    refuse(path, reason(e));
+  } catch (const std::bad_alloc&) {
+    refuse(path, "out of memory");
+  } catch (const std::exception& e) {
+    refuse(path, e.what());
+  }
 }
 
 void itk_write_labels(const std::filesystem::path& path, const RawLabels& image) {
