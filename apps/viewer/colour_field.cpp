@@ -32,6 +32,16 @@ VecX ColourField::values(interactive::PhysicsLoop& loop, const interactive::Snap
       hi = value.cwiseAbs().maxCoeff();
       lo = -hi;
       break;
+    case interactive::ColorField::kYoung:  // the tissues of a model with regions, by stiffness
+      if (m_young_version != snap.model_version) {
+        loop.with(
+            [&](const interactive::LiveSimulation& sim) { m_young = interactive::node_youngs_modulus(sim.model()); });
+        m_young_version = snap.model_version;
+      }
+      value = m_young;
+      lo = value.minCoeff();
+      hi = value.maxCoeff();
+      break;
     case interactive::ColorField::kWeights:
       // The blocks are shared and immutable: the weights are computed here, not under the physics' lock.
       if (m_built_version != snap.model_version) {

@@ -26,6 +26,8 @@ class ColourField {
   long m_springs_version = -1;
   calibrate::BuiltModel m_built;  // the model's blocks, for the Eq. 4 weights
   long m_built_version = -1;
+  VecX m_young;  // E per node, Pa
+  long m_young_version = -1;
 };
 
 }  // namespace hooke::viewer

@@ -216,7 +216,7 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
   ImGui::Separator();
 
   std::string field = interactive::color_field_name(state.field);
-  if (combo("colour", field, {"none", "displacement", "error", "strain", "weights"}))
+  if (combo("colour", field, {"none", "displacement", "error", "strain", "weights", "young"}))
     state.field = interactive::color_field_from_name(field);
   std::string ghost = state.ghost == Ghost::kOff ? "off" : state.ghost == Ghost::kLinear ? "linear" : "stvk";
   if (combo("FEM ghost", ghost, {"off", "linear", "stvk"})) {

@@ -37,6 +37,7 @@ int run_view(ViewCli o) {
   v.settings.model.method = o.in.model_path.empty() ? given.method : interactive::live_method_for(v.model);
   v.settings.material = v.model.material;
   v.settings.model.density = v.model.density;
+  v.settings.model.regions = v.model.regions;  // the sliders change the material of the regions not listed
   v.settings.simulator = o.settings.simulator;
   // Multirate: the haptic loop renders from each deformation step's probe force, so it is converged further.
   if (v.haptic_rate > 0.0) v.settings.simulator.quasi_newton.tolerance = interactive::kDeformationTolerance;
@@ -71,7 +72,9 @@ std::function<int()> add_view_options(CLI::App* cmd) {
   cli::add_dynamics_options(cmd, o->settings.dynamics);
   cmd->add_option("--grab-radius", o->run.grab_radius, "Grab the surface nodes within this distance too, m")
       ->capture_default_str();
-  cmd->add_option("--colormap", o->colormap, "none, displacement, error, strain, weights")->capture_default_str();
+  cmd->add_option("--colormap", o->colormap,
+                  "none, displacement, error, strain, weights, young (E per node: the tissues)")
+      ->capture_default_str();
   cmd->add_option("--script", o->script, "Timed interactions to replay (docs/viewer.md)");
   cmd->add_option("--screenshot", o->run.screenshot, "Write the last frame as a PNG at exit");
   cmd->add_option("--frames", o->run.frames, "Exit after this many drawn frames (0: when the window closes)");

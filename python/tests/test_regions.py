@@ -63,3 +63,15 @@ def test_cli_calibrates_and_certifies_each_region(meshes, tmp_path):
                              capture_output=True, text=True)
         assert run.returncode == 2 and words in run.stderr, (args, run.stderr)
         assert not (tmp_path / "x.json").exists()
+
+
+def test_live_recalibration_keeps_the_regions(meshes):
+    mesh, _ = nodule_cylinder(meshes)
+    model = hooke.calibrate(mesh, hooke.Material(5000.0, 0.45), method="any-nu-tet", materials={2: (25000.0, 0.45)})
+    sim = hooke.LiveSimulation(model)
+    sim.apply(young=8000.0)  # the slider: the material of the regions not listed
+    live = sim.model
+    assert live.regions == {2: (25000.0, 0.45)} and live.material.E == 8000.0
+    ratio = live.stiffness / model.stiffness  # 8000 / 5000 outside the nodule, 1 inside it, between on its interface
+    assert ratio.min() > 1.0 - 1e-9 and ratio.max() < 1.6 + 1e-9
+    assert (np.abs(ratio - 1.0) < 1e-9).sum() > 50 and (np.abs(ratio - 1.6) < 1e-9).sum() > 500

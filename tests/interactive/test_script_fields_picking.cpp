@@ -148,6 +148,29 @@ TEST(Fields, SurfaceViewOfTetsIsTheBoundary) {
   EXPECT_THROW(color_field_from_name("heat"), InvalidArgument);
 }
 
+// E per node: one material everywhere, or with a stiffer region the largest of each node's elements'.
+TEST(Fields, YoungsModulusPerNodeShowsTheRegions) {
+  mesh::Mesh m = mesh::tet_box(0.02, 0.02, 0.02, 2, 2, 2);
+  calibrate::ModelOptions o;
+  o.method = "any-nu-tet";
+  const material::Material soft{material::Law::kLinear, 5000.0, 0.45};
+  EXPECT_EQ(node_youngs_modulus(calibrate::calibrate_model(m, soft, o)), VecX::Constant(27, 5000.0));
+  for (int e = 0; e < m.element_count(); ++e) m.region(e) = e < 6 ? 2 : 1;  // the first cube's six tets
+  o.regions = {{2, 25000.0, 0.45}};
+  const VecX young = node_youngs_modulus(calibrate::calibrate_model(m, soft, o));
+  int stiff = 0;
+  for (int i = 0; i < 27; ++i) {
+    bool in_first_cube = false;
+    for (int e = 0; e < 6; ++e)
+      for (int k = 0; k < 4; ++k) in_first_cube |= m.elements(e, k) == i;
+    EXPECT_EQ(young(i), in_first_cube ? 25000.0 : 5000.0) << i;
+    stiff += in_first_cube;
+  }
+  EXPECT_EQ(stiff, 8);
+  EXPECT_EQ(color_field_from_name("young"), ColorField::kYoung);
+  EXPECT_EQ(color_field_unit(ColorField::kYoung), "Pa");
+}
+
 TEST(Fields, ColourMapIsOrderedAndClamped) {
   double last = -1.0;
   for (int k = 0; k <= 20; ++k) {

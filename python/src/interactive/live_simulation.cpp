@@ -83,6 +83,7 @@ void define_live_simulation(py::module_& m) {
              s.model.method = interactive::live_method_for(model);
              s.material = model.material;
              s.model.density = model.density;
+             s.model.regions = model.regions;
              s.simulator.integrator = solve::integrator_from_name(integrator);
              s.dynamics.dt = dt;
              return std::make_unique<SharedSimulation>(LiveSimulation(model, with_settings(s, kwargs)));

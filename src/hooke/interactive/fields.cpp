@@ -41,12 +41,13 @@ SurfaceView surface_view(const mesh::Mesh& mesh) {
 }
 
 namespace {
-constexpr NameTable<ColorField, 5> kColorFields{"colour map",
+constexpr NameTable<ColorField, 6> kColorFields{"colour map",
                                                 {{{ColorField::kNone, "none"},
                                                   {ColorField::kDisplacement, "displacement"},
                                                   {ColorField::kError, "error"},
                                                   {ColorField::kStrain, "strain"},
-                                                  {ColorField::kWeights, "weights"}}}};
+                                                  {ColorField::kWeights, "weights"},
+                                                  {ColorField::kYoung, "young"}}}};
 }  // namespace
 
 ColorField color_field_from_name(const std::string& name) { return kColorFields.from_name(name); }
@@ -58,9 +59,22 @@ std::string color_field_unit(ColorField f) {
     case ColorField::kError: return "m";
     case ColorField::kStrain:
     case ColorField::kWeights: return "1";
+    case ColorField::kYoung: return "Pa";
     case ColorField::kNone: break;
   }
   return "";
+}
+
+VecX node_youngs_modulus(const calibrate::CalibratedModel& model) {
+  const std::vector<material::Material> materials = calibrate::element_materials(model);
+  VecX out = VecX::Zero(model.mesh.node_count());
+  if (materials.size() == 1 || model.mesh.element_count() == 0) return out.setConstant(materials[0].youngs_modulus);
+  for (int e = 0; e < model.mesh.element_count(); ++e)
+    for (Eigen::Index k = 0; k < model.mesh.elements.cols(); ++k) {
+      double& v = out(model.mesh.elements(e, k));
+      v = std::max(v, materials[static_cast<std::size_t>(e)].youngs_modulus);
+    }
+  return out;
 }
 
 VecX displacement_magnitude(const VecX& x, const VecX& rest, int dim) { return node_distance(x, rest, dim); }

@@ -279,8 +279,8 @@ LiveSimulation::LiveSimulation(calibrate::CalibratedModel model, const LiveSetti
   const bool same_method =
       settings.model.method == model.method || (settings.model.method == "auto" && !model.choice.empty());
   const bool own = calibrate::model_kind_of_method(settings.model.method) == calibrate::ModelKind::kFile;
-  const bool as_is =
-      own || (same_method && settings.material == model.material && settings.model.density == model.density);
+  const bool as_is = own || (same_method && settings.material == model.material &&
+                             settings.model.density == model.density && settings.model.regions == model.regions);
   if (!as_is) model = calibrate_for(model.mesh, settings);
   m->settings = settings;
   m->built = calibrate::build_model(model);
@@ -312,9 +312,9 @@ void LiveSimulation::apply(const LiveSettings& s) {
     throw InvalidArgument(
         "this model's constants are its own (method '" + m->model.method +
         "', not one hooke calibrates): a new E, nu, density, term law or surface option needs a method");
-  const bool recalibrate =
-      !own && (s.model.method != old.model.method || s.material != old.material ||
-               s.model.density != old.model.density || new_law || !same_surface(s.model.surface, old.model.surface));
+  const bool recalibrate = !own && (s.model.method != old.model.method || s.material != old.material ||
+                                    s.model.density != old.model.density || s.model.regions != old.model.regions ||
+                                    new_law || !same_surface(s.model.surface, old.model.surface));
   // Build everything new first (strong guarantee), then swap.
   std::optional<calibrate::CalibratedModel> model;
   calibrate::BuiltModel built = m->built;
