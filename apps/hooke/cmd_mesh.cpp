@@ -27,7 +27,7 @@ struct MeshOptions {
   bool binary = false;
   GivenSettings tetrahedralize;   ///< calibrate::model_settings() rows of settings::kMesh
   std::vector<int> labels;        ///< from-image: the body's labels (empty: every label but 0)
-  image::LabelMeshOptions image;  ///< from-image: smoothing and specks
+  image::LabelMeshOptions image;  ///< from-image: smoothing (specks: --speck-fraction, a tet setting)
 };
 
 int run_info(const MeshOptions& o) {
@@ -178,10 +178,6 @@ Action add_mesh_command(CLI::App& app) {
   from_image
       ->add_option("--surface-smoothing", o->image.surface_smoothing,
                    "Taubin smoothing iterations of the extracted surface")
-      ->capture_default_str();
-  from_image
-      ->add_option("--speck-fraction", o->image.speck_fraction,
-                   "Drop separate pieces enclosing less than this fraction of the largest one's volume")
       ->capture_default_str();
   from_image->add_flag("--binary", o->binary, "Binary .msh");
   add_settings(from_image, settings::describe(calibrate::model_settings(), settings::kMesh), o->tetrahedralize,

@@ -77,6 +77,31 @@ TEST(Tetrahedralize, KeptCubeSurfaceIsTheBoundaryExactly) {
   EXPECT_EQ(tets.nodes.topRows(cube.node_count()), cube.nodes);
 }
 
+// A segmentation's speck beside the body (a cube of 1/20 the side: 1/8000 of the volume) is dropped by default, and
+// reported; with speck_fraction 0 the surface of two pieces is refused as before.
+TEST(Tetrahedralize, SpecksAreDroppedAndReported) {
+  const Mesh body = cube_surface(4, 0.1);
+  Mesh speck = cube_surface(1, 0.005);
+  speck.nodes.col(0).array() += 0.2;
+  RowMatX x(body.node_count() + speck.node_count(), 3);
+  x << body.nodes, speck.nodes;
+  RowMatXi t(body.element_count() + speck.element_count(), 3);
+  t << body.elements, (speck.elements.array() + body.node_count()).matrix();
+  const Mesh both = make_mesh(ElementKind::kSurfaceTriangle, x, t, "cube and speck");
+  TetrahedralizeReport r;
+  const Mesh tets = tetrahedralize(both, {}, &r);
+  EXPECT_EQ(r.dropped_pieces, 1);
+  EXPECT_NEAR(r.dropped_volume, 1.25e-7, 1e-15);
+  EXPECT_NEAR(r.volume, 1e-3, 1e-15);
+  EXPECT_EQ(r.surface_triangles, body.element_count());
+  EXPECT_NE(r.summary().find("1 specks dropped"), std::string::npos) << r.summary();
+  TetrahedralizeOptions keep;
+  keep.speck_fraction = 0.0;
+  EXPECT_NE(error_of(both, keep).find("several separate pieces"), std::string::npos);
+  keep.speck_fraction = 2.0;
+  EXPECT_THROW(tetrahedralize(both, keep), InvalidArgument);
+}
+
 TEST(Tetrahedralize, RefusalsNameTheCause) {
   Mesh hole = cube_surface(3, 1.0);
   hole.elements.conservativeResize(hole.element_count() - 1, 3);

@@ -126,6 +126,11 @@ std::vector<Setting<Options>> rows() {
       },
       [](Options& o, std::string_view t) { o.tetrahedralize.surface = mesh::surface_meshing_from_name(t); },
       [](const Options& o) { return std::string(mesh::surface_meshing_name(o.tetrahedralize.surface)); }));
+  r.push_back(settings::number<Options>(
+      "speck-fraction", "", 0.0, 1.0, kTets,
+      "Closed surface to tets: drop separate pieces enclosing less than this fraction of the largest one's volume "
+      "(specks of a segmentation), with a warning; 0 keeps them",
+      [](Options& o) -> double& { return o.tetrahedralize.speck_fraction; }));
   r.push_back(settings::number<Options>("fineness", "", 0.0, 1.0, kTets,
                                         "Closed surface to tets: Netgen's fineness, 0 (coarse) .. 1 (fine)",
                                         [](Options& o) -> double& { return o.tetrahedralize.fineness; }));

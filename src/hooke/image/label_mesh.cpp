@@ -145,17 +145,7 @@ LabelMesh labels_to_mesh(const LabelImage& image, const LabelMeshOptions& option
   mesh::Mesh surface = extract_surface(grid, fractions, options.smoothing, image.source);
   fractions = {};
   surface = mesh::weld_surface(surface, &out.welded_nodes);
-  mesh::PiecesReport pieces;
-  surface = mesh::drop_small_pieces(surface, options.speck_fraction, &pieces);
-  out.dropped_pieces = pieces.dropped;
-  out.dropped_volume = pieces.dropped_volume;
-  if (pieces.dropped > 0)
-    log(LogLevel::kWarning, image.source + ": dropped " + std::to_string(pieces.dropped) +
-                                " separate piece(s) of the surface, " + std::to_string(pieces.dropped_volume * 1e9) +
-                                " mm^3 together (below " + std::to_string(options.speck_fraction) +
-                                " of the largest piece's volume)");
   mesh::taubin_smooth(surface, options.surface_smoothing);
-  out.surface_triangles = surface.element_count();
   tet.surface = mesh::SurfaceMeshing::kKeep;
   try {
     out.tets = io::tetrahedralize(std::move(surface), tet, &out.meshing);
@@ -163,6 +153,9 @@ LabelMesh labels_to_mesh(const LabelImage& image, const LabelMeshOptions& option
     throw InvalidMesh(image.source + ": the surface of labels could not be meshed: " + e.what(), -1);
   }
   out.tets.source = image.source;
+  out.surface_triangles = out.meshing.surface_triangles;  // after the specks (tetrahedralize drops them)
+  out.dropped_pieces = out.meshing.dropped_pieces;
+  out.dropped_volume = out.meshing.dropped_volume;
   const int ne = out.tets.element_count();
   out.tets.region.resize(ne);
   const int fallback = *selected.begin();

@@ -15,15 +15,12 @@ namespace hooke::image {
 struct LabelMeshOptions {
   std::vector<int> labels;  ///< the labels of the body; empty: every value but 0
   /// tetrahedralize.max_size (m) is the tets' target edge (0: the labels' bounding-box diagonal / 25); the surface is
-  /// extracted on voxels of about half of it
+  /// extracted on voxels of about half of it; tetrahedralize.speck_fraction drops the specks
   mesh::TetrahedralizeOptions tetrahedralize;
   /// the Gaussian's sigma before the threshold, in (averaged) voxels, in [0, 10]; measured on a box with a sphere
   /// (tests/image): 1 voxel rounds a box's edges off (-1.2 % of its volume), 0.5 keeps it within 0.03 %
   double smoothing = 0.5;
   int surface_smoothing = 10;  ///< Taubin iterations on the extracted surface (mesh::taubin_smooth), >= 0
-  /// separate pieces of the surface enclosing less than this fraction of the largest one's volume are dropped with
-  /// a warning (specks of a segmentation), in [0, 1]
-  double speck_fraction = 1e-3;
 };
 
 /// Per label: what the image holds and what the mesh made of it.

@@ -7,6 +7,7 @@
 #include <hooke/mesh/closed_surface.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <hooke/mesh/self_intersection.hpp>
+#include <hooke/mesh/surface_cleanup.hpp>
 #include <hooke/mesh/surface_distance.hpp>
 #include <hooke/mesh/tetrahedralize.hpp>
 #include <hooke/mesh/topology.hpp>
@@ -62,6 +63,8 @@ void check_options(const TetrahedralizeOptions& o) {
     throw InvalidArgument("the quality floor (radius ratio) must lie in [0, 1), not " + general(o.min_radius_ratio));
   if (!(o.max_volume_error > 0.0) || !std::isfinite(o.max_volume_error))
     throw InvalidArgument("the allowed volume error must be > 0, not " + general(o.max_volume_error));
+  if (!(o.speck_fraction >= 0.0 && o.speck_fraction <= 1.0))
+    throw InvalidArgument("the speck fraction must lie in [0, 1], not " + general(o.speck_fraction));
   if (o.mesher == Mesher::kTetgen && o.surface == SurfaceMeshing::kRemesh)
     throw InvalidArgument("the tetgen mesher keeps the scan's triangles; --surface-mesh remesh is Netgen's");
 }
@@ -204,10 +207,12 @@ std::string TetrahedralizeReport::summary() const {
                                                                     : std::string();
   return backend + ", surface " + std::string(surface_meshing_name(options.surface)) + ", size " +
          general(options.max_size) + " m" + netgen_only + ": " + std::to_string(surface_nodes) + " surface nodes, " +
-         std::to_string(surface_triangles) + " triangles -> " + std::to_string(nodes) + " nodes, " +
-         std::to_string(tets) + " tets; volume " + (volume_error >= 0.0 ? "+" : "") + fixed(100.0 * volume_error, 2) +
-         " % of the enclosed volume; Hausdorff " + general(hausdorff) + " m (" + fixed(100.0 * hausdorff_relative, 2) +
-         " % of the diagonal" + (surface_preserved ? ", surface nodes preserved" : "") + "); radius ratio min " +
+         std::to_string(surface_triangles) + " triangles" +
+         (dropped_pieces > 0 ? " (" + std::to_string(dropped_pieces) + " specks dropped)" : std::string()) + " -> " +
+         std::to_string(nodes) + " nodes, " + std::to_string(tets) + " tets; volume " +
+         (volume_error >= 0.0 ? "+" : "") + fixed(100.0 * volume_error, 2) + " % of the enclosed volume; Hausdorff " +
+         general(hausdorff) + " m (" + fixed(100.0 * hausdorff_relative, 2) + " % of the diagonal" +
+         (surface_preserved ? ", surface nodes preserved" : "") + "); radius ratio min " +
          fixed(quality.min_radius_ratio, 3) + " mean " + fixed(quality.mean_radius_ratio, 3) + ", dihedral " +
          fixed(quality.min_dihedral, 1) + " .. " + fixed(quality.max_dihedral, 1) + " deg, " + std::to_string(slivers) +
          " slivers; " + fixed(seconds, 2) + " s";
@@ -232,6 +237,16 @@ Mesh tetrahedralize(Mesh surface, const TetrahedralizeOptions& options, Tetrahed
   TetrahedralizeReport r;
   r.backend = mesher.name;
   r.options = options;
+  if (options.speck_fraction > 0.0) {
+    PiecesReport pieces;
+    surface = drop_small_pieces(surface, options.speck_fraction, &pieces);
+    r.dropped_pieces = pieces.dropped;
+    r.dropped_volume = pieces.dropped_volume;
+    if (pieces.dropped > 0)
+      log_warning(surface_name(surface) + ": dropped " + std::to_string(pieces.dropped) + " separate piece(s) of " +
+                  general(pieces.dropped_volume) + " m^3 together, below " + general(options.speck_fraction) +
+                  " of the largest piece's volume (--speck-fraction 0 keeps them)");
+  }
   r.surface_nodes = surface.node_count();
   r.surface_triangles = surface.element_count();
   const SurfaceCheckReport check = check_closed_surface(surface);

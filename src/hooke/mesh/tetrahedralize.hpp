@@ -53,6 +53,10 @@ struct TetrahedralizeOptions {
   /// (certificate, inversion guard), docs/meshing.md.
   double min_radius_ratio = 0.0;
   double max_volume_error = 0.01;  ///< |V_tets / V_surface - 1| above this fails the meshing
+  /// Separate pieces of the surface enclosing less than this fraction of the largest one's volume (specks of a
+  /// segmentation beside the organ) are dropped with a warning naming their count and volume (mesh::drop_small_pieces),
+  /// in [0, 1]; 0 keeps them (and a surface of several pieces is refused). Default 1e-3.
+  double speck_fraction = 1e-3;
 };
 
 /// TetGen's quality targets (its -q switch), used by Mesher::kTetgen: radius-edge ratio and smallest dihedral angle.
@@ -69,6 +73,8 @@ struct TetrahedralizeReport {
   int surface_nodes = 0;          ///< input surface
   int surface_triangles = 0;
   int flipped_triangles = 0;    ///< input triangles reoriented by check_closed_surface
+  int dropped_pieces = 0;       ///< specks dropped (options.speck_fraction)
+  double dropped_volume = 0.0;  ///< the volume they enclosed, m^3
   double surface_volume = 0.0;  ///< enclosed by the input surface, m^3
   int nodes = 0;                ///< output tet mesh
   int tets = 0;
@@ -85,7 +91,8 @@ struct TetrahedralizeReport {
 };
 
 /// The tet mesh of the solid bounded by `surface` (kind kSurfaceTriangle, m), validated, tets positively oriented.
-/// Before meshing: check_closed_surface (closed, manifold, oriented, one piece) and require_no_self_intersection;
+/// Before meshing: specks dropped (options.speck_fraction, a warning), check_closed_surface (closed, manifold,
+/// oriented, one piece) and require_no_self_intersection;
 /// a warning when the surface is larger than 10 m across (a file in millimetres read as metres: give --unit mm).
 /// After: the volume within options.max_volume_error of the enclosed volume, every tet's radius ratio above
 /// options.min_radius_ratio, the quality and Hausdorff distance in `report`. Netgen's own messages are silenced;
