@@ -158,15 +158,28 @@ PanelRequests draw_panel(ViewState& state, const interactive::Snapshot& snap, in
   if (fixed_material)
     ImGui::TextWrapped("This model's constants are its own: E and nu are fixed (choose a method to recalibrate).");
   ImGui::BeginDisabled(fixed_material);
-  float log_e = static_cast<float>(std::log10(e.material.youngs_modulus));
+  // With regions (docs/regions.md) the sliders edit the chosen tissue: a listed region, or the regions not listed.
+  if (state.tissue >= static_cast<int>(e.model.regions.size())) state.tissue = -1;
+  if (!e.model.regions.empty()) {
+    std::vector<std::string> tissues{"other regions"};
+    for (const calibrate::RegionMaterial& t : e.model.regions) tissues.push_back("region " + std::to_string(t.region));
+    std::string chosen = tissues[static_cast<std::size_t>(state.tissue + 1)];
+    if (combo("tissue", chosen, tissues))
+      state.tissue = static_cast<int>(std::find(tissues.begin(), tissues.end(), chosen) - tissues.begin()) - 1;
+  }
+  double& young = state.tissue < 0 ? e.material.youngs_modulus
+                                   : e.model.regions[static_cast<std::size_t>(state.tissue)].youngs_modulus;
+  double& poisson = state.tissue < 0 ? e.material.poisson_ratio
+                                     : e.model.regions[static_cast<std::size_t>(state.tissue)].poisson_ratio;
+  float log_e = static_cast<float>(std::log10(young));
   ImGui::SliderFloat("log10 E (Pa)", &log_e, 2.0f, 9.0f, "%.2f");
-  if (ImGui::IsItemEdited()) e.material.youngs_modulus = std::pow(10.0, static_cast<double>(log_e));
+  if (ImGui::IsItemEdited()) young = std::pow(10.0, static_cast<double>(log_e));
   r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
   ImGui::SameLine();
-  ImGui::Text("%.3g", e.material.youngs_modulus);
-  float nu = static_cast<float>(e.material.poisson_ratio);
+  ImGui::Text("%.3g", young);
+  float nu = static_cast<float>(poisson);
   ImGui::SliderFloat("Poisson nu", &nu, -0.2f, 0.499f, "%.3f");
-  if (ImGui::IsItemEdited()) e.material.poisson_ratio = nu;
+  if (ImGui::IsItemEdited()) poisson = nu;
   r.apply_settings |= ImGui::IsItemDeactivatedAfterEdit();
   ImGui::EndDisabled();
   std::vector<std::string> methods = calibrate::model_method_names();

@@ -19,7 +19,10 @@ struct ViewState {
   std::string ghost_message;            ///< how the last ghost solve went
   std::string setting_error;            ///< why the last model setting typed in the panel was refused
   interactive::LiveSettings edit;       ///< what the panel edits; applied on release of a slider
-  double grab_radius = 0.0;             ///< nodes within this distance of the picked point are grabbed too, m
+  /// the tissue the E and nu sliders edit: -1 the regions not listed (edit.material), else an index into
+  /// edit.model.regions (docs/regions.md)
+  int tissue = -1;
+  double grab_radius = 0.0;  ///< nodes within this distance of the picked point are grabbed too, m
   /// (sim time, |F| in N) over the last 5 s: the probe's force, or the tool's while a tool presses
   std::deque<std::pair<double, float>> force_history;
   double draw_rate = 0.0;  ///< frames per second of wall time

@@ -1,6 +1,8 @@
 // mesh/surface_cleanup: welding a cracked surface, dropping a speck, Taubin smoothing without shrinking.
 #include <gtest/gtest.h>
 
+#include <support/meshes.hpp>
+
 #include <cmath>
 #include <hooke/mesh/closed_surface.hpp>
 #include <hooke/mesh/generators.hpp>
@@ -42,11 +44,7 @@ TEST(SurfaceCleanup, DropsASpeckAndKeepsTheBody) {
   const Mesh body = uv_sphere_surface(12, 16, 0.01);
   Mesh speck = uv_sphere_surface(6, 8, 0.001);
   speck.nodes.col(0).array() += 0.05;
-  RowMatX x(body.node_count() + speck.node_count(), 3);
-  x << body.nodes, speck.nodes;
-  RowMatXi t(body.element_count() + speck.element_count(), 3);
-  t << body.elements, (speck.elements.array() + body.node_count()).matrix();
-  const Mesh both = make_mesh(ElementKind::kSurfaceTriangle, x, t, "two pieces");
+  const Mesh both = test::two_pieces(body, speck, "two pieces");
   PiecesReport r;
   const Mesh kept = drop_small_pieces(both, 1e-2, &r);
   EXPECT_EQ(r.pieces, 2);

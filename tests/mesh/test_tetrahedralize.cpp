@@ -3,6 +3,8 @@
 // femur, head and bones from Debian's libcgal-demo).
 #include <gtest/gtest.h>
 
+#include <support/meshes.hpp>
+
 #include <cmath>
 #include <filesystem>
 #include <hooke/core/error.hpp>
@@ -83,11 +85,7 @@ TEST(Tetrahedralize, SpecksAreDroppedAndReported) {
   const Mesh body = cube_surface(4, 0.1);
   Mesh speck = cube_surface(1, 0.005);
   speck.nodes.col(0).array() += 0.2;
-  RowMatX x(body.node_count() + speck.node_count(), 3);
-  x << body.nodes, speck.nodes;
-  RowMatXi t(body.element_count() + speck.element_count(), 3);
-  t << body.elements, (speck.elements.array() + body.node_count()).matrix();
-  const Mesh both = make_mesh(ElementKind::kSurfaceTriangle, x, t, "cube and speck");
+  const Mesh both = test::two_pieces(body, speck, "cube and speck");
   TetrahedralizeReport r;
   const Mesh tets = tetrahedralize(both, {}, &r);
   EXPECT_EQ(r.dropped_pieces, 1);

@@ -48,4 +48,12 @@ Mat3 random_rotation(unsigned seed) {
   return q.normalized().toRotationMatrix();
 }
 
+mesh::Mesh two_pieces(const mesh::Mesh& a, const mesh::Mesh& b, const std::string& source) {
+  RowMatX x(a.node_count() + b.node_count(), 3);
+  x << a.nodes, b.nodes;
+  RowMatXi t(a.element_count() + b.element_count(), 3);
+  t << a.elements, (b.elements.array() + a.node_count()).matrix();
+  return mesh::make_mesh(mesh::ElementKind::kSurfaceTriangle, x, t, source);
+}
+
 }  // namespace hooke::test
