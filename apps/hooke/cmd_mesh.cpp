@@ -96,6 +96,9 @@ int run_tetrahedralize(const MeshOptions& o) {
               r.options.max_size);
   std::printf("  surface     %d nodes, %d triangles (%d reoriented), encloses %.6g m^3\n", r.surface_nodes,
               r.surface_triangles, r.flipped_triangles, r.surface_volume);
+  if (r.closed_holes > 0 || r.dropped_pieces > 0)
+    std::printf("  repaired    %d holes closed (%.4g m^2 added), %d specks dropped (%.4g m^3)\n", r.closed_holes,
+                r.added_area, r.dropped_pieces, r.dropped_volume);
   std::printf("  tets        %d nodes, %d tets, volume %.6g m^3 (%+.3f %%)\n", r.nodes, r.tets, r.volume,
               100.0 * r.volume_error);
   std::printf("  fidelity    Hausdorff %.4g m (%.3f %% of the diagonal)%s\n", r.hausdorff, 100.0 * r.hausdorff_relative,

@@ -100,6 +100,33 @@ TEST(Tetrahedralize, SpecksAreDroppedAndReported) {
   EXPECT_THROW(tetrahedralize(both, keep), InvalidArgument);
 }
 
+// --repair N closes holes of at most N edges: a cube missing one triangle (a 3-edge hole) or two (a square) meshes to
+// the cube's volume with the missing area added back; a hole longer than N is still refused, naming an edge.
+TEST(Tetrahedralize, RepairClosesSmallHolesOnly) {
+  const Mesh cube = cube_surface(4, 0.1);
+  for (const int missing : {1, 2}) {
+    Mesh holed = cube;
+    holed.elements = cube.elements.bottomRows(cube.element_count() - missing).eval();
+    holed.region.setZero(holed.element_count());
+    EXPECT_NE(error_of(holed).find("hole"), std::string::npos) << error_of(holed);
+    TetrahedralizeOptions o;
+    o.repair_max_edges = 8;
+    TetrahedralizeReport r;
+    tetrahedralize(holed, o, &r);
+    EXPECT_EQ(r.closed_holes, 1);
+    EXPECT_NEAR(r.added_area, missing * 0.5 * 0.025 * 0.025, 1e-15);  // the missing triangles' area
+    EXPECT_NEAR(r.volume, 1e-3, 1e-15);
+    EXPECT_NE(r.summary().find("1 holes closed"), std::string::npos) << r.summary();
+    o.repair_max_edges = 3;  // the square's 4 edges are too many
+    if (missing == 2) {
+      EXPECT_NE(error_of(holed, o).find("hole"), std::string::npos);
+    }
+  }
+  TetrahedralizeOptions bad;
+  bad.repair_max_edges = 2;
+  EXPECT_THROW(tetrahedralize(cube, bad), InvalidArgument);
+}
+
 TEST(Tetrahedralize, RefusalsNameTheCause) {
   Mesh hole = cube_surface(3, 1.0);
   hole.elements.conservativeResize(hole.element_count() - 1, 3);

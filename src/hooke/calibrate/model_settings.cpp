@@ -126,6 +126,11 @@ std::vector<Setting<Options>> rows() {
       },
       [](Options& o, std::string_view t) { o.tetrahedralize.surface = mesh::surface_meshing_from_name(t); },
       [](const Options& o) { return std::string(mesh::surface_meshing_name(o.tetrahedralize.surface)); }));
+  r.push_back(settings::integer<Options>(
+      "repair", 0, 100000, kTets,
+      "Closed surface to tets: close holes of at most this many edges with a fan of triangles (the added area is "
+      "reported); 0 refuses a surface with a hole",
+      [](Options& o) -> int& { return o.tetrahedralize.repair_max_edges; }));
   r.push_back(settings::number<Options>(
       "speck-fraction", "", 0.0, 1.0, kTets,
       "Closed surface to tets: drop separate pieces enclosing less than this fraction of the largest one's volume "

@@ -119,6 +119,73 @@ Mesh drop_small_pieces(const Mesh& surface, double fraction, PiecesReport* repor
   return r.dropped == 0 ? surface : subset(surface, keep);
 }
 
+Mesh close_small_holes(const Mesh& surface, int max_edges, HolesReport* report) {
+  require_surface(surface, "close_small_holes");
+  if (max_edges < 3) throw InvalidArgument("close_small_holes: a hole has at least 3 edges");
+  // Directed edges of the triangles; a boundary edge a -> b has no triangle with b -> a nor another with a -> b.
+  std::map<std::pair<int, int>, int> directed;
+  for (int t = 0; t < surface.element_count(); ++t)
+    for (int k = 0; k < 3; ++k) ++directed[{surface.elements(t, k), surface.elements(t, (k + 1) % 3)}];
+  std::map<int, std::vector<int>> next;  // boundary edges by their start node
+  for (const auto& [e, count] : directed)
+    if (count == 1 && !directed.count({e.second, e.first})) next[e.first].push_back(e.second);
+  HolesReport r;
+  std::vector<Vec3> nodes;
+  std::vector<std::array<int, 3>> added;
+  std::set<int> used;
+  for (const auto& [start, out] : next) {
+    if (used.count(start)) continue;
+    std::vector<int> loop{start};
+    bool simple = out.size() == 1;
+    int at = start;
+    while (simple) {
+      const auto it = next.find(at);
+      if (it == next.end() || it->second.size() != 1) {
+        simple = false;
+        break;
+      }
+      at = it->second[0];
+      if (at == start) break;
+      if (std::find(loop.begin(), loop.end(), at) != loop.end() || loop.size() > next.size()) {
+        simple = false;
+        break;
+      }
+      loop.push_back(at);
+    }
+    for (const int n : loop) used.insert(n);
+    if (!simple || static_cast<int>(loop.size()) > max_edges) {
+      ++r.left;
+      continue;
+    }
+    Vec3 c = Vec3::Zero();
+    for (const int n : loop) c += surface.nodes.row(n).transpose();
+    c /= static_cast<double>(loop.size());
+    const int centre = surface.node_count() + static_cast<int>(nodes.size());
+    nodes.push_back(c);
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const int a = loop[k], b = loop[(k + 1) % loop.size()];
+      added.push_back({centre, b, a});  // its edge b -> a meets the boundary edge a -> b
+      const Vec3 pa = surface.nodes.row(a), pb = surface.nodes.row(b);
+      r.added_area += 0.5 * (pb - c).cross(pa - c).norm();
+    }
+    ++r.closed;
+    r.largest_closed = std::max(r.largest_closed, static_cast<int>(loop.size()));
+  }
+  if (report) *report = r;
+  if (added.empty()) return surface;
+  RowMatX x(surface.node_count() + static_cast<Eigen::Index>(nodes.size()), 3);
+  x.topRows(surface.node_count()) = surface.nodes;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    x.row(surface.node_count() + static_cast<Eigen::Index>(i)) = nodes[i].transpose();
+  RowMatXi t(surface.element_count() + static_cast<Eigen::Index>(added.size()), 3);
+  t.topRows(surface.element_count()) = surface.elements;
+  for (std::size_t i = 0; i < added.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      t(surface.element_count() + static_cast<Eigen::Index>(i), k) = added[i][static_cast<std::size_t>(k)];
+  Mesh out = make_mesh(surface.kind, std::move(x), std::move(t), surface.source);
+  return out;
+}
+
 void taubin_smooth(Mesh& surface, int iterations) {
   require_surface(surface, "taubin_smooth");
   if (iterations < 0) throw InvalidArgument("taubin_smooth: iterations must be >= 0");

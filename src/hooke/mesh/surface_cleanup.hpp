@@ -24,6 +24,20 @@ struct PiecesReport {
 /// @pre kind kSurfaceTriangle
 Mesh drop_small_pieces(const Mesh& surface, double fraction, PiecesReport* report = nullptr);
 
+/// What close_small_holes did.
+struct HolesReport {
+  int closed = 0;           ///< holes (boundary loops) closed
+  int left = 0;             ///< boundary loops longer than the limit, left open
+  double added_area = 0.0;  ///< area of the triangles added, m^2
+  int largest_closed = 0;   ///< edges of the longest loop closed
+};
+
+/// Closes every hole (a loop of boundary edges: edges of one triangle only) of at most `max_edges` edges with a fan of
+/// triangles from a new node at the loop's centroid, oriented like the triangles around it. Longer loops (a face
+/// scan's open back) and boundaries that are not simple loops are left as they are (the closed-surface check then
+/// refuses them, naming an edge). @pre kind kSurfaceTriangle, max_edges >= 3
+Mesh close_small_holes(const Mesh& surface, int max_edges, HolesReport* report = nullptr);
+
 /// Taubin's lambda|mu smoothing (Taubin 1995, "A signal processing approach to fair surface design", SIGGRAPH):
 /// `iterations` pairs of Laplacian steps (umbrella operator, uniform weights) with factors lambda = 0.5 and
 /// mu = -0.53, which remove a voxel grid's steps without the shrinkage of plain Laplacian smoothing. In place.

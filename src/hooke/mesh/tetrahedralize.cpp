@@ -50,6 +50,26 @@ std::string general(double v) {
   return buffer;
 }
 
+// Holes closed (--repair) and specks dropped (--speck-fraction) before the checks, each with a warning.
+void repair(Mesh& surface, const TetrahedralizeOptions& o, TetrahedralizeReport& r) {
+  HolesReport holes;
+  PiecesReport pieces;
+  if (o.repair_max_edges > 0) surface = close_small_holes(surface, o.repair_max_edges, &holes);
+  if (o.speck_fraction > 0.0) surface = drop_small_pieces(surface, o.speck_fraction, &pieces);
+  r.closed_holes = holes.closed;
+  r.added_area = holes.added_area;
+  r.dropped_pieces = pieces.dropped;
+  r.dropped_volume = pieces.dropped_volume;
+  const std::string name = surface_name(surface);
+  if (holes.closed > 0)
+    log_warning(name + ": closed " + std::to_string(holes.closed) + " hole(s) of up to " +
+                std::to_string(holes.largest_closed) + " edges, adding " + general(holes.added_area) + " m^2");
+  if (pieces.dropped > 0)
+    log_warning(name + ": dropped " + std::to_string(pieces.dropped) + " separate piece(s) of " +
+                general(pieces.dropped_volume) + " m^3 together, below " + general(o.speck_fraction) +
+                " of the largest piece's volume (--speck-fraction 0 keeps them)");
+}
+
 void check_options(const TetrahedralizeOptions& o) {
   if (!(o.max_size >= 0.0) || !std::isfinite(o.max_size))
     throw InvalidArgument("the mesh size must be a length > 0 m (or 0 for automatic), not " + general(o.max_size));
@@ -63,6 +83,8 @@ void check_options(const TetrahedralizeOptions& o) {
     throw InvalidArgument("the quality floor (radius ratio) must lie in [0, 1), not " + general(o.min_radius_ratio));
   if (!(o.max_volume_error > 0.0) || !std::isfinite(o.max_volume_error))
     throw InvalidArgument("the allowed volume error must be > 0, not " + general(o.max_volume_error));
+  if (o.repair_max_edges < 0 || o.repair_max_edges == 1 || o.repair_max_edges == 2)
+    throw InvalidArgument("holes to repair have at least 3 edges, not " + std::to_string(o.repair_max_edges));
   if (!(o.speck_fraction >= 0.0 && o.speck_fraction <= 1.0))
     throw InvalidArgument("the speck fraction must lie in [0, 1], not " + general(o.speck_fraction));
   if (o.mesher == Mesher::kTetgen && o.surface == SurfaceMeshing::kRemesh)
@@ -208,8 +230,11 @@ std::string TetrahedralizeReport::summary() const {
   return backend + ", surface " + std::string(surface_meshing_name(options.surface)) + ", size " +
          general(options.max_size) + " m" + netgen_only + ": " + std::to_string(surface_nodes) + " surface nodes, " +
          std::to_string(surface_triangles) + " triangles" +
-         (dropped_pieces > 0 ? " (" + std::to_string(dropped_pieces) + " specks dropped)" : std::string()) + " -> " +
-         std::to_string(nodes) + " nodes, " + std::to_string(tets) + " tets; volume " +
+         (dropped_pieces > 0 ? " (" + std::to_string(dropped_pieces) + " specks dropped)" : std::string()) +
+         (closed_holes > 0
+              ? " (" + std::to_string(closed_holes) + " holes closed, " + general(added_area) + " m^2 added)"
+              : std::string()) +
+         " -> " + std::to_string(nodes) + " nodes, " + std::to_string(tets) + " tets; volume " +
          (volume_error >= 0.0 ? "+" : "") + fixed(100.0 * volume_error, 2) + " % of the enclosed volume; Hausdorff " +
          general(hausdorff) + " m (" + fixed(100.0 * hausdorff_relative, 2) + " % of the diagonal" +
          (surface_preserved ? ", surface nodes preserved" : "") + "); radius ratio min " +
@@ -237,16 +262,7 @@ Mesh tetrahedralize(Mesh surface, const TetrahedralizeOptions& options, Tetrahed
   TetrahedralizeReport r;
   r.backend = mesher.name;
   r.options = options;
-  if (options.speck_fraction > 0.0) {
-    PiecesReport pieces;
-    surface = drop_small_pieces(surface, options.speck_fraction, &pieces);
-    r.dropped_pieces = pieces.dropped;
-    r.dropped_volume = pieces.dropped_volume;
-    if (pieces.dropped > 0)
-      log_warning(surface_name(surface) + ": dropped " + std::to_string(pieces.dropped) + " separate piece(s) of " +
-                  general(pieces.dropped_volume) + " m^3 together, below " + general(options.speck_fraction) +
-                  " of the largest piece's volume (--speck-fraction 0 keeps them)");
-  }
+  repair(surface, options, r);
   r.surface_nodes = surface.node_count();
   r.surface_triangles = surface.element_count();
   const SurfaceCheckReport check = check_closed_surface(surface);

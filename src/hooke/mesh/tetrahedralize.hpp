@@ -57,6 +57,9 @@ struct TetrahedralizeOptions {
   /// segmentation beside the organ) are dropped with a warning naming their count and volume (mesh::drop_small_pieces),
   /// in [0, 1]; 0 keeps them (and a surface of several pieces is refused). Default 1e-3.
   double speck_fraction = 1e-3;
+  /// Close holes of at most this many edges first (mesh::close_small_holes: a fan from the loop's centroid, the added
+  /// area reported); 0 (the default, `--repair` off) refuses a surface with a hole, naming an edge
+  int repair_max_edges = 0;
 };
 
 /// TetGen's quality targets (its -q switch), used by Mesher::kTetgen: radius-edge ratio and smallest dihedral angle.
@@ -73,6 +76,8 @@ struct TetrahedralizeReport {
   int surface_nodes = 0;          ///< input surface
   int surface_triangles = 0;
   int flipped_triangles = 0;    ///< input triangles reoriented by check_closed_surface
+  int closed_holes = 0;         ///< holes closed (options.repair_max_edges)
+  double added_area = 0.0;      ///< their triangles' area, m^2
   int dropped_pieces = 0;       ///< specks dropped (options.speck_fraction)
   double dropped_volume = 0.0;  ///< the volume they enclosed, m^3
   double surface_volume = 0.0;  ///< enclosed by the input surface, m^3
