@@ -3,6 +3,7 @@
 #include <fstream>
 #include <hooke/contact/rigid_tool.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/interactive/fields.hpp>
 #include <hooke/interactive/physics_loop.hpp>
 #include <hooke/interactive/script.hpp>
 #include <sstream>
@@ -129,8 +130,11 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     } else if (verb == "colormap") {
       c.action = ScriptAction::kColormap;
       c.key = p.word("colour map");
-      if (c.key != "none" && c.key != "displacement" && c.key != "error" && c.key != "strain" && c.key != "weights")
-        p.fail("unknown colour map '" + c.key + "' (none, displacement, error, strain, weights)");
+      try {  // the names of interactive::ColorField, one table
+        color_field_from_name(c.key);
+      } catch (const InvalidArgument& e) {
+        p.fail(e.what());
+      }
     } else if (verb == "ghost") {
       c.action = ScriptAction::kGhost;
       c.key = p.word("off, linear or stvk");
