@@ -1,6 +1,5 @@
 // Label images: ITK reads and writes them (image/detail/itk_bridge.cpp); here the grid becomes world coordinates (m).
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/image/detail/itk_bridge.hpp>
@@ -9,25 +8,9 @@
 #include <system_error>
 
 namespace hooke::image {
-namespace {
-
-std::string lower_name(const std::filesystem::path& path) {
-  std::string name = path.filename().string();
-  std::transform(name.begin(), name.end(), name.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return name;
-}
-
-bool ends_with_any(const std::string& name, std::initializer_list<const char*> extensions) {
-  for (const char* e : extensions)
-    if (name.size() > std::string(e).size() && name.ends_with(e)) return true;
-  return false;
-}
-
-}  // namespace
 
 bool is_label_image_path(const std::filesystem::path& path) {
-  return ends_with_any(lower_name(path), {".nii", ".nii.gz", ".nrrd", ".nhdr", ".mha", ".mhd"});
+  return detail::image_format(path) != detail::ImageFormat::kNone;
 }
 
 Vec3 LabelImage::centre(int i, int j, int k) const { return origin + direction * spacing.cwiseProduct(Vec3(i, j, k)); }
@@ -77,7 +60,9 @@ LabelImage read_label_image(const std::filesystem::path& path, double metres_per
 }
 
 void write_label_image(const std::filesystem::path& path, const LabelImage& image) {
-  if (!ends_with_any(lower_name(path), {".nii", ".nii.gz", ".nrrd", ".mha"}))
+  using F = detail::ImageFormat;
+  const F format = detail::image_format(path);
+  if (format != F::kNifti && format != F::kNiftiGz && format != F::kNrrd && format != F::kMha)
     throw InvalidArgument("'" + path.string() + "': label images are written as .nii, .nii.gz, .nrrd or .mha");
   const std::int64_t voxels = static_cast<std::int64_t>(image.size[0]) * image.size[1] * image.size[2];
   if (voxels < 1 || static_cast<std::int64_t>(image.labels.size()) != voxels)

@@ -124,7 +124,6 @@ LabelMesh labels_to_mesh(const LabelImage& image, const LabelMeshOptions& option
   if (selected.empty()) throw InvalidArgument(image.source + " has no voxel of a label other than 0");
   // The selected voxels' bounding box sets the default size.
   Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
-  std::int64_t inside = 0;
   for (int k = 0; k < image.size[2]; ++k)
     for (int j = 0; j < image.size[1]; ++j)
       for (int i = 0; i < image.size[0]; ++i)
@@ -132,7 +131,6 @@ LabelMesh labels_to_mesh(const LabelImage& image, const LabelMeshOptions& option
           const Vec3 c = image.centre(i, j, k);
           lo = lo.cwiseMin(c);
           hi = hi.cwiseMax(c);
-          ++inside;
         }
   mesh::TetrahedralizeOptions tet = options.tetrahedralize;
   if (tet.max_size == 0.0) tet.max_size = (hi - lo + image.spacing).norm() / 25.0;
@@ -167,25 +165,27 @@ LabelMesh labels_to_mesh(const LabelImage& image, const LabelMeshOptions& option
     }
     out.tets.region(e) = l;
   }
+  std::map<int, LabelReport> by_label;  // one pass over the tets for every label's report
   for (const int l : selected) {
-    LabelReport r;
+    LabelReport& r = by_label[l];
     r.label = l;
     r.voxels = histogram.at(l);
     r.voxel_volume = static_cast<double>(r.voxels) * image.voxel_volume();
     r.min_dihedral = 180.0;
-    for (int e = 0; e < ne; ++e) {
-      if (out.tets.region(e) != l) continue;
-      ++r.tets;
-      r.volume += mesh::element_measure(out.tets, e);
-      Vec3 p[4];
-      for (int k = 0; k < 4; ++k) p[k] = out.tets.nodes.row(out.tets.elements(e, k)).transpose();
-      for (const double angle : mesh::dihedral_angles(p[0], p[1], p[2], p[3]))
-        r.min_dihedral = std::min(r.min_dihedral, angle);
-    }
+  }
+  for (int e = 0; e < ne; ++e) {
+    LabelReport& r = by_label.at(out.tets.region(e));
+    ++r.tets;
+    r.volume += mesh::element_measure(out.tets, e);
+    Vec3 p[4];
+    for (int k = 0; k < 4; ++k) p[k] = out.tets.nodes.row(out.tets.elements(e, k)).transpose();
+    for (const double angle : mesh::dihedral_angles(p[0], p[1], p[2], p[3]))
+      r.min_dihedral = std::min(r.min_dihedral, angle);
+  }
+  for (auto& [l, r] : by_label) {
     r.volume_error = r.volume / r.voxel_volume - 1.0;
     out.labels.push_back(r);
   }
-  (void)inside;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

@@ -182,8 +182,7 @@ Mesh close_small_holes(const Mesh& surface, int max_edges, HolesReport* report) 
   for (std::size_t i = 0; i < added.size(); ++i)
     for (int k = 0; k < 3; ++k)
       t(surface.element_count() + static_cast<Eigen::Index>(i), k) = added[i][static_cast<std::size_t>(k)];
-  Mesh out = make_mesh(surface.kind, std::move(x), std::move(t), surface.source);
-  return out;
+  return make_mesh(surface.kind, std::move(x), std::move(t), surface.source);
 }
 
 void taubin_smooth(Mesh& surface, int iterations) {

@@ -28,19 +28,16 @@ using Labels = itk::Image<std::int32_t, 3>;
 using Real = itk::Image<float, 3>;
 using Mask = itk::Image<unsigned char, 3>;
 
-std::string lower_name(const std::filesystem::path& path) {
-  std::string name = path.filename().string();
-  std::transform(name.begin(), name.end(), name.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return name;
-}
-
 itk::ImageIOBase::Pointer io_for(const std::filesystem::path& path) {
-  const std::string name = lower_name(path);
-  auto ends = [&](const char* e) { return name.size() > std::string(e).size() && name.ends_with(e); };
-  if (ends(".nii") || ends(".nii.gz")) return itk::NiftiImageIO::New().GetPointer();
-  if (ends(".nrrd") || ends(".nhdr")) return itk::NrrdImageIO::New().GetPointer();
-  if (ends(".mha") || ends(".mhd")) return itk::MetaImageIO::New().GetPointer();
+  switch (image_format(path)) {
+    case ImageFormat::kNifti:
+    case ImageFormat::kNiftiGz: return itk::NiftiImageIO::New().GetPointer();
+    case ImageFormat::kNrrd:
+    case ImageFormat::kNhdr: return itk::NrrdImageIO::New().GetPointer();
+    case ImageFormat::kMha:
+    case ImageFormat::kMhd: return itk::MetaImageIO::New().GetPointer();
+    case ImageFormat::kNone: break;
+  }
   throw InvalidArgument("'" + path.string() + "' is not a label image (use .nii, .nii.gz, .nrrd, .nhdr, .mha or .mhd)");
 }
 
@@ -84,8 +81,8 @@ void set_grid(Image* image, const Grid& g) {
 // 1032:1 (DEFLATE's limit; gzip, NRRD's gzip and MetaImage's compression all use it). So a 64 KB file never makes
 // ITK allocate gigabytes. (A detached header, .nhdr or .mhd, names its data file elsewhere: not checked here.)
 void require_plausible_size(const std::filesystem::path& path, std::uint64_t bytes) {
-  const std::string name = lower_name(path);
-  if (name.ends_with(".nhdr") || name.ends_with(".mhd")) return;
+  const ImageFormat format = image_format(path);
+  if (format == ImageFormat::kNhdr || format == ImageFormat::kMhd) return;
   std::error_code ec;
   const std::uint64_t size = std::filesystem::file_size(path, ec);
   if (!ec && bytes > 1032 * size + 65536)
@@ -97,8 +94,8 @@ void require_plausible_size(const std::filesystem::path& path, std::uint64_t byt
 // uncompressed .mha: such a file (its data LOCAL, after the header line "ElementDataFile = LOCAL") must hold every
 // voxel's bytes.
 void require_local_data(const std::filesystem::path& path, std::uint64_t bytes) {
-  const std::string name = lower_name(path);
-  if (name.ends_with(".nii") || name.ends_with(".nii.gz")) {
+  const ImageFormat format = image_format(path);
+  if (format == ImageFormat::kNifti || format == ImageFormat::kNiftiGz) {
     // NIfTI's reader does not notice a short (or short once inflated) file either: the data follows a header of at
     // least 348 bytes, so the inflated file must be at least that much longer than the voxels.
     gzFile in = gzopen(path.c_str(), "rb");
@@ -115,7 +112,7 @@ void require_local_data(const std::filesystem::path& path, std::uint64_t bytes) 
       refuse(path, "the file ends before its " + std::to_string(bytes) + " bytes of voxel data");
     return;
   }
-  if (!name.ends_with(".mha")) return;
+  if (format != ImageFormat::kMha) return;
   std::ifstream in(path, std::ios::binary);
   std::string head(65536, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
@@ -131,6 +128,18 @@ void require_local_data(const std::filesystem::path& path, std::uint64_t bytes) 
 }
 
 }  // namespace
+
+ImageFormat image_format(const std::filesystem::path& path) {
+  std::string name = path.filename().string();
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::pair<const char*, ImageFormat> formats[] = {
+      {".nii.gz", ImageFormat::kNiftiGz}, {".nii", ImageFormat::kNifti}, {".nrrd", ImageFormat::kNrrd},
+      {".nhdr", ImageFormat::kNhdr},      {".mha", ImageFormat::kMha},   {".mhd", ImageFormat::kMhd}};
+  for (const auto& [ext, format] : formats)
+    if (name.size() > std::string(ext).size() && name.ends_with(ext)) return format;
+  return ImageFormat::kNone;
+}
 
 namespace {
 
@@ -228,7 +237,7 @@ void itk_write_labels(const std::filesystem::path& path, const RawLabels& image)
     writer->SetImageIO(io_for(path));
     writer->SetFileName(path.string());
     writer->SetInput(out);
-    writer->SetUseCompression(lower_name(path).ends_with(".gz"));
+    writer->SetUseCompression(image_format(path) == ImageFormat::kNiftiGz);
     writer->Update();
   } catch (const itk::ExceptionObject& e) {
     throw IoError("cannot write label image '" + path.string() + "': " + reason(e));

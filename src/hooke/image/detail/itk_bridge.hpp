@@ -9,6 +9,10 @@
 
 namespace hooke::image::detail {
 
+// The label-image formats, by file name (any case; ".nii.gz" is one extension).
+enum class ImageFormat { kNone, kNifti, kNiftiGz, kNrrd, kNhdr, kMha, kMhd };
+ImageFormat image_format(const std::filesystem::path& path);
+
 struct Grid {
   std::array<std::int64_t, 3> size{0, 0, 0};
   std::array<double, 3> spacing{1.0, 1.0, 1.0};
