@@ -9,7 +9,7 @@
 namespace hooke::mesh {
 namespace {
 
-std::string error_of(Mesh m) {
+std::string closed_surface_error(Mesh m) {
   try {
     check_closed_surface(m);
   } catch (const InvalidMesh& e) {
@@ -45,11 +45,12 @@ TEST(ClosedSurface, NamesHolesNonManifoldEdgesAndPieces) {
   Mesh m = cube_surface(2, 1.0);
   Mesh hole = m;
   hole.elements.conservativeResize(m.element_count() - 1, 3);
-  EXPECT_NE(error_of(hole).find("hole"), std::string::npos) << error_of(hole);
+  EXPECT_NE(closed_surface_error(hole).find("hole"), std::string::npos) << closed_surface_error(hole);
   Mesh tripled = m;
   tripled.elements.conservativeResize(m.element_count() + 1, 3);
   tripled.elements.row(m.element_count()) << m.elements(0, 0), m.elements(0, 1), m.elements(3, 2);
-  EXPECT_NE(error_of(tripled).find("three or more triangles"), std::string::npos) << error_of(tripled);
+  EXPECT_NE(closed_surface_error(tripled).find("three or more triangles"), std::string::npos)
+      << closed_surface_error(tripled);
   // Two cubes side by side: two pieces.
   Mesh two = m;
   const int n = m.node_count();
@@ -57,9 +58,9 @@ TEST(ClosedSurface, NamesHolesNonManifoldEdgesAndPieces) {
   two.nodes.bottomRows(n) = m.nodes.array() + 3.0;
   two.elements.conservativeResize(2 * m.element_count(), 3);
   two.elements.bottomRows(m.element_count()) = m.elements.array() + n;
-  EXPECT_NE(error_of(two).find("several separate pieces"), std::string::npos) << error_of(two);
+  EXPECT_NE(closed_surface_error(two).find("several separate pieces"), std::string::npos) << closed_surface_error(two);
   Mesh tets = tet_box(1, 1, 1, 1, 1, 1);
-  EXPECT_NE(error_of(tets).find("closed triangle surface"), std::string::npos);
+  EXPECT_NE(closed_surface_error(tets).find("closed triangle surface"), std::string::npos);
 }
 
 }  // namespace

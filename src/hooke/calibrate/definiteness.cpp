@@ -1,8 +1,8 @@
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <hooke/calibrate/definiteness.hpp>
 #include <hooke/calibrate/detail/mandel.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/core/symmetric_eigen.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <map>
 
@@ -58,8 +58,7 @@ std::vector<int> tets_without_definite_share(const mesh::Mesh& m, const SpringMo
       scale += std::abs(c);
     }
     // Definite with a margin of round-off: the smallest eigenvalue above 1e-12 of the entries' scale.
-    const Eigen::SelfAdjointEigenSolver<Mat6> eig(s, Eigen::EigenvaluesOnly);
-    if (!(eig.eigenvalues()(0) > 1e-12 * scale)) out.push_back(t);
+    if (!(symmetric_eigenvalues(s)(0) > 1e-12 * scale)) out.push_back(t);
   }
   return out;
 }

@@ -1,7 +1,7 @@
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <hooke/core/error.hpp>
+#include <hooke/core/symmetric_eigen.hpp>
 #include <hooke/interactive/live_simulation.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <hooke/model/load_case.hpp>
@@ -110,8 +110,8 @@ struct LiveSimulation::Impl {
   // into the device): what the local model renders, the secant after its update and the condensed stiffness plus
   // T(offset), its tangent at the offset (the offsets count from the grab, where the curvature is taken).
   static MatX positive_part(const MatX& k) {
-    const Eigen::SelfAdjointEigenSolver<MatX> eig(0.5 * (k + k.transpose()));
-    return eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).asDiagonal() * eig.eigenvectors().transpose();
+    const SymmetricEigen eig = symmetric_eigen(0.5 * (k + k.transpose()));
+    return eig.vectors * eig.values.cwiseMax(0.0).asDiagonal() * eig.vectors.transpose();
   }
 
   // Powell-symmetric-Broyden: the smallest symmetric change of K with K s = y, s the probe's move over the step and

@@ -1,7 +1,7 @@
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/core/sparse_cholesky.hpp>
+#include <hooke/core/symmetric_eigen.hpp>
 #include <hooke/solve/stability.hpp>
 #include <random>
 
@@ -12,8 +12,7 @@ double smallest_eigenvalue(const SparseMatrix& a, double relative_tolerance) {
   if (n == 0) return 0.0;
   if (n <= 800) {
     const MatX dense = MatX(a);
-    Eigen::SelfAdjointEigenSolver<MatX> eig(dense, Eigen::EigenvaluesOnly);
-    return eig.eigenvalues()(0);
+    return symmetric_eigenvalues(dense)(0);
   }
   // Sylvester: a - t I is positive definite exactly when t < lambda_min. Bracket lambda_min between a shift
   // that factorises (lo) and one that does not (hi), then refine by inverse iteration shifted to lo.

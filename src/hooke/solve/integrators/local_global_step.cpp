@@ -2,11 +2,11 @@
 // incremental potential of implicit Euler for central-spring models, minimised by alternating spring directions
 // (local) and one constant linear system (global), solved by a prefactored Cholesky or by Chebyshev-accelerated
 // Jacobi sweeps (Wang 2015).
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/core/sparse_cholesky.hpp>
+#include <hooke/core/symmetric_eigen.hpp>
 #include <hooke/solve/detail/incremental_potential.hpp>
 #include <hooke/solve/detail/integrator_step.hpp>
 #include <hooke/solve/detail/sparse_ops.hpp>
@@ -134,7 +134,7 @@ class LocalGlobalStep final : public IntegratorStep {
       t(i, i) = alpha(i);
       if (i + 1 < m) t(i, i + 1) = t(i + 1, i) = beta(i);
     }
-    const VecX ritz = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(t, Eigen::EigenvaluesOnly).eigenvalues();
+    const VecX ritz = symmetric_eigenvalues(t);
     m_lo = std::clamp(ritz(0), m_a_min, m_b);
   }
 
