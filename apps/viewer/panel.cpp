@@ -92,7 +92,11 @@ void rates(const interactive::PhysicsStats& s, double draw_rate, const interacti
                        "behind real time: %.0f of %.0f steps/s (%ld steps longer than dt)", s.achieved_rate,
                        s.target_rate, s.overruns);
   if (s.paused) ImGui::TextColored(ImVec4(0.1f, 0.3f, 0.8f, 1.0f), "paused (Space)");
-  if (s.not_converged > 0) ImGui::Text("%d steps above the Newton tolerance", s.not_converged);
+  // The whole run beside the last second's rate: a run can keep the rate now and have lost time to a stall.
+  if (s.steps > 0)
+    ImGui::Text("run: %.2f s simulated in %.2f s (%.0f %% of real time); %d of %ld steps (%.1f %%) above tolerance",
+                s.sim_time, s.wall_time, 100.0 * interactive::real_time_fraction(s), s.not_converged, s.steps,
+                100.0 * interactive::fraction_above_tolerance(s));
   if (!s.error.empty()) ImGui::TextColored(ImVec4(0.85f, 0.1f, 0.1f, 1.0f), "%s", s.error.c_str());
 }
 

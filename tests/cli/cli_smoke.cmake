@@ -200,7 +200,7 @@ if(NOT rc EQUAL 3 OR NOT err MATCHES "stability limit" OR EXISTS ${OUT}/sim_bad/
 endif()
 
 # hooke bench: the table on the 1 089-node cylinder (every run checked admissible), as Markdown and JSON; an unknown size is refused.
-execute_process(COMMAND ${HOOKE} bench --sizes 1k --steps 3 --methods any-nu-tet,lloyd-tet -o ${OUT}/bench
+execute_process(COMMAND ${HOOKE} bench --sizes 1k --steps 3 --methods any-nu-tet,lloyd-tet --all -o ${OUT}/bench
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out
                 ERROR_VARIABLE err)
 message("${out}${err}")
@@ -222,6 +222,15 @@ foreach(row 2 3 4 5 6 7 8)
     message(FATAL_ERROR "hooke bench: row ${row} is '${name}' with error ${error} against the converged step")
   endif()
 endforeach()
+# Without --all: the real-time row (quasi-newton (rest)) of the two default models, a progress line per row on
+# standard error.
+execute_process(COMMAND ${HOOKE} bench --sizes 1k --steps 3 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(REGEX MATCHALL "\\| 1089 \\| [a-z-]+ \\| [^|]+ \\|" rows "${out}")
+string(REGEX MATCHALL "hooke bench: 1089 nodes, [a-z-]+, quasi-newton \\(rest\\): [0-9.]+ ms median" lines "${err}")
+if(NOT rc EQUAL 0 OR NOT rows STREQUAL "| 1089 | any-nu-tet | quasi-newton (rest) |;| 1089 | stiffness-fit-volume | quasi-newton (rest) |"
+   OR NOT lines MATCHES "any-nu-tet.*stiffness-fit-volume")
+  message(FATAL_ERROR "hooke bench (default) failed (${rc}): rows '${rows}', progress '${lines}'\n${out}${err}")
+endif()
 # hooke bench --haptics: the multirate row on the 1 089-node cylinder, with its force error against the full-rate
 # drag (a short drag, so that the test stays short); an unknown stiffness is refused.
 execute_process(COMMAND ${HOOKE} bench --haptics --sizes 1k --ramp 0.3 --hold 0.1 -o ${OUT}/haptics

@@ -208,6 +208,13 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
     if (std::none_of(std::begin(kRuns), std::end(kRuns), [&](const Run& r) { return name == r.name; }))
       throw InvalidArgument("the benchmark has no row '" + name + "'");
   DynamicsBenchmarkReport report;
+  const auto begin = Clock::now();
+  auto progress = [&](const std::string& what) {
+    if (!options.progress) return;
+    char elapsed[32];
+    std::snprintf(elapsed, sizeof elapsed, " (%.0f s)", 1e-3 * ms_since(begin));
+    options.progress(what + elapsed);
+  };
   const double triad = triad_bytes_per_second();
   report.triad_gbps = triad * 1e-9;
   for (int size : options.sizes) {
@@ -217,6 +224,7 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
       cm.springs.spring_exponent = options.spring_exponent;
       cm.springs.volume_exponent = options.volume_exponent;
       const int nodes = cm.mesh.node_count();
+      progress(std::to_string(nodes) + " nodes, " + method + ": calibrated");
       if (first_method) report.springs.push_back(spring_throughput(cm, triad));
       first_method = false;
       const calibrate::BuiltModel built = calibrate::build_model(cm);
@@ -281,14 +289,18 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
         StepTiming t = timed_run(*sim, run, drag, dt, options.steps, why);
         if (!why.empty()) {
           report.notes.push_back(std::string(run.name) + on + " not reported: " + why);
+          progress(report.notes.back());
           continue;
         }
         t.nodes = nodes;
         t.method = method;
         if (!is_explicit(run.integrator) && run.integrator != solve::Integrator::kQuasiStatic && size < 2) {
           if (drag.tool) t.tool_force = drag.contact->tool_force(sim->positions()).dot(-drag.direction);
-          if (reference.size() == 0)
+          if (reference.size() == 0) {
             reference = converged_reference(problem, dynamics, options.dt, options.steps, drag);
+            progress(std::to_string(nodes) + " nodes, " + method + ": converged reference (" +
+                     std::to_string(options.steps + 1) + " implicit-Euler steps, Newton to 1e-12)");
+          }
           t.error_vs_converged = relative_error(sim->positions(), reference, problem.model->rest_positions());
           if (drag.tool) {
             drag.tool->set_pose(
@@ -297,6 +309,15 @@ DynamicsBenchmarkReport run_dynamics_benchmark(const DynamicsBenchmarkOptions& o
           }
         }
         report.steps.push_back(t);
+        char row[200];
+        std::snprintf(row, sizeof row, "%d nodes, %s, %s: %.3f ms median, p99 %.3f ms, %d steps above tolerance", nodes,
+                      method.c_str(), run.name, t.median_ms, t.p99_ms, t.not_converged);
+        std::string line = row;
+        if (t.error_vs_converged >= 0.0) {
+          std::snprintf(row, sizeof row, ", error %.2g of a converged step", t.error_vs_converged);
+          line += row;
+        }
+        progress(line);
       }
     }
   }

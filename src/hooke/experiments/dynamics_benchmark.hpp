@@ -3,6 +3,7 @@
 /// Benchmark, and adds Bullet): tetrahedral cylinders of about 1 000, 10 000 and 100 000 nodes (benchmark_cylinder,
 /// r 1 cm, h 2 cm, E 14 630 Pa, 1 000 kg/m^3, bottom clamped), models of several methods at one nu, gravity and a
 /// probe dragging the top's centre sideways; every row's error against a tightly converged implicit step.
+#include <functional>
 #include <hooke/calibrate/calibrated_model.hpp>
 #include <hooke/contact/contact_block.hpp>
 #include <hooke/core/types.hpp>
@@ -48,6 +49,9 @@ struct DynamicsBenchmarkOptions {
   double volume_exponent = 1.0;
   /// rows to run by name (e.g. "quasi-newton", "local-global (chebyshev)"; empty = all)
   std::vector<std::string> integrators;
+  /// Called with one line after each row, each model's calibration and each converged reference: what was
+  /// measured and the seconds since the run began (`hooke bench` prints it on standard error); may be empty.
+  std::function<void(const std::string&)> progress;
 };
 
 /// The benchmark's probe protocol: `nodes` held and dragged along x by `distance` m, linearly until `ramp_s` s of

@@ -485,6 +485,12 @@ void PhysicsLoop::run_steps() {
   }
 }
 
+double real_time_fraction(const PhysicsStats& s) { return s.wall_time > 0.0 ? s.sim_time / s.wall_time : 0.0; }
+
+double fraction_above_tolerance(const PhysicsStats& s) {
+  return s.steps > 0 ? static_cast<double>(s.not_converged) / static_cast<double>(s.steps) : 0.0;
+}
+
 void write_stats(const std::string& path, const PhysicsStats& s,
                  const std::vector<std::pair<std::string, double>>& extra) {
   nlohmann::ordered_json j;
@@ -498,8 +504,10 @@ void write_stats(const std::string& path, const PhysicsStats& s,
   j["behind"] = s.behind;
   j["sim_time_s"] = s.sim_time;
   j["wall_time_s"] = s.wall_time;
+  j["real_time_fraction"] = real_time_fraction(s);
   j["iterations"] = s.iterations;
   j["not_converged"] = s.not_converged;
+  j["fraction_above_tolerance"] = fraction_above_tolerance(s);
   j["error"] = s.error;
   for (const auto& [key, value] : extra) j[key] = std::isfinite(value) ? nlohmann::ordered_json(value) : nullptr;
   write_file_atomically(path, [&](std::ostream& out) { out << j.dump(2) << '\n'; });

@@ -40,6 +40,13 @@ struct PhysicsStats {
   std::string error;       ///< the last failure (a step that inverted an element, a calibration that failed)
 };
 
+/// Simulated time over wall time since the loop started (pauses excluded): the fraction of real time the whole run
+/// kept, beside achieved_rate's last second; 0 before the first step.
+double real_time_fraction(const PhysicsStats& s);
+
+/// The fraction of all steps so far that ended above the solver's tolerance, in [0, 1]; 0 before the first step.
+double fraction_above_tolerance(const PhysicsStats& s);
+
 /// The latest consistent state, as the drawing side sees it.
 struct Snapshot {
   long version = 0;          ///< increases with every published state
