@@ -1,7 +1,8 @@
 // Every input in tests/fuzz/regressions/FORMAT/ (inputs that once crashed, hung or exhausted memory in a reader,
 // issue 16) is read as the fuzz targets read it: through read_mesh with validation. A hooke::Error or a valid mesh
 // is the only acceptable outcome; the issue-16 files (item*) and the fuzzer's findings so far (fuzz_*) are all
-// malformed and must be rejected. Model files (model/) go through calibrate::read_model. Under the
+// malformed and must be rejected. Model files (model/) go through calibrate::read_model, label images (mha/, nii/,
+// nii.gz/, nrrd/) through image::read_label_image. Under the
 // sanitizer build this is where a regression would show as a report.
 #include <gtest/gtest.h>
 
@@ -9,6 +10,7 @@
 #include <fstream>
 #include <hooke/calibrate/model_file.hpp>
 #include <hooke/core/error.hpp>
+#include <hooke/image/label_image.hpp>
 #include <hooke/io/mesh_io.hpp>
 #include <sstream>
 #include <string>
@@ -55,6 +57,8 @@ TEST(FuzzRegressions, EveryCommittedInputIsRejectedOrRead) {
         if (format == "model") {
           const calibrate::CalibratedModel m = calibrate::read_model(entry.path());
           EXPECT_GT(m.mesh.node_count(), 0) << name;
+        } else if (image::is_label_image_path("input." + format)) {  // as fuzz_image.cpp reads them
+          EXPECT_GT(image::read_label_image(as_mesh_file(entry.path(), format)).voxel_count(), 0) << name;
         } else {
           const mesh::Mesh m = read_mesh(as_mesh_file(entry.path(), format));
           EXPECT_GT(m.element_count(), 0) << name;

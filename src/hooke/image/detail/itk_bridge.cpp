@@ -15,10 +15,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <hooke/core/error.hpp>
 #include <hooke/image/detail/itk_bridge.hpp>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 namespace hooke::image::detail {
@@ -127,6 +129,69 @@ void require_local_data(const std::filesystem::path& path, std::uint64_t bytes) 
     refuse(path, "the file ends before its " + std::to_string(bytes) + " bytes of voxel data");
 }
 
+// ITK's MetaImage reader reads NDims values for each of DimSize, ElementSpacing, Offset and the like, and NDims^2 for
+// the transform, without bounding NDims: a header with "NDims = -1" made it read 2^32 values from the stream (found
+// by fuzzing: tests/fuzz/regressions/mha). A label image is 3D, so a MetaImage header must say NDims = 3 before
+// ITK reads it.
+void require_three_meta_dimensions(const std::filesystem::path& path) {
+  const ImageFormat format = image_format(path);
+  if (format != ImageFormat::kMha && format != ImageFormat::kMhd) return;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int n = 0; n < 4096 && std::getline(in, line); ++n) {
+    const std::size_t eq = line.find('=');
+    if (eq == std::string::npos) continue;
+    std::string key = line.substr(0, eq), value = line.substr(eq + 1);
+    auto trim = [](std::string& t) {
+      const std::size_t a = t.find_first_not_of(" \t\r"), b = t.find_last_not_of(" \t\r");
+      t = a == std::string::npos ? std::string() : t.substr(a, b - a + 1);
+    };
+    trim(key);
+    trim(value);
+    std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (key == "elementdatafile") return;  // the header ends here; the voxels follow
+    if (key == "ndims" && value != "3")
+      refuse(path, "a label image must be 3D, this header declares NDims = " + value.substr(0, 40));
+  }
+}
+
+// ITK's NIfTI reader takes the header's orientation (the quaternion, its offsets and the sform rows) to a
+// single-precision SVD that aborts the process on a non-finite number and does not return when squares of the
+// entries overflow (both found by fuzzing: tests/fuzz/regressions/nii). So every float of a NIfTI-1 header that
+// describes the grid (pixdim, vox_offset, the scaling, the quaternion, the offsets and the sform rows, bytes 76-119
+// and 256-327) must be finite and at most 1e9 in magnitude (a kilometre in mm) before ITK reads it. A header of
+// another size is left to ITK.
+void require_finite_nifti_geometry(const std::filesystem::path& path) {
+  const ImageFormat format = image_format(path);
+  if (format != ImageFormat::kNifti && format != ImageFormat::kNiftiGz) return;
+  gzFile in = gzopen(path.c_str(), "rb");  // reads an uncompressed file as it is
+  if (!in) refuse(path, "cannot be opened by zlib");
+  unsigned char header[348];
+  const int got = gzread(in, header, sizeof header);
+  gzclose(in);
+  if (got != static_cast<int>(sizeof header)) return;  // too short for a header: ITK says what it is not
+  auto word = [&](int at, bool swap) {
+    std::uint32_t w = 0;
+    for (int b = 0; b < 4; ++b)
+      w |= static_cast<std::uint32_t>(header[at + (swap ? 3 - b : b)]) << (8 * b);  // little-endian unless swapped
+    return w;
+  };
+  bool swap = false;
+  if (word(0, false) != 348) {
+    if (word(0, true) != 348) return;  // not a NIfTI-1 header
+    swap = true;
+  }
+  for (const auto& [first, end] : {std::pair{76, 120}, std::pair{256, 328}})
+    for (int at = first; at < end; at += 4) {
+      const std::uint32_t w = word(at, swap);
+      float f = 0.0f;
+      std::memcpy(&f, &w, sizeof f);
+      if (!(std::abs(f) <= 1e9f))
+        refuse(path, "the header's grid geometry (spacing, offset or orientation, byte " + std::to_string(at) +
+                         ") is not a finite number of at most 1e9");
+    }
+}
+
 }  // namespace
 
 ImageFormat image_format(const std::filesystem::path& path) {
@@ -149,6 +214,8 @@ RawLabels read_labels(const std::filesystem::path& path, std::int64_t max_voxels
   itk::ImageIOBase::Pointer io = io_for(path);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw IoError("cannot open label image '" + path.string() + "'");
+  require_three_meta_dimensions(path);
+  require_finite_nifti_geometry(path);
   try {
     if (!io->CanReadFile(path.c_str())) refuse(path, "not a readable image of its extension's format");
     io->SetFileName(path.string());
