@@ -111,6 +111,8 @@ TEST(LabelImage, RefusesHostileFiles) {
       {"huge.mha", header_replaced("DimSize = 40 36 30", "DimSize = 100000 100000 100000")},
       {"flat.mha", header_replaced("NDims = 3", "NDims = 2")},
       {"negative_ndims.mha", header_replaced("NDims = 3", "NDims = -1")},  // ITK read 2^32 values: a hang
+      // a file pattern with a step of 0: ITK divided by zero
+      {"file_pattern.mha", header_replaced("ElementDataFile = LOCAL", "ElementDataFile = s%d.raw 1 2 0")},
       {"zero_spacing.mha", header_replaced("ElementSpacing = 1 1.25 1.5", "ElementSpacing = 0 1.25 1.5")},
       {"float.mha", header_replaced("MET_INT", "MET_FLOAT")},  // the int bytes read as floats: not whole numbers
       {"nan_sform.nii", nan_sform},

@@ -129,11 +129,14 @@ void require_local_data(const std::filesystem::path& path, std::uint64_t bytes) 
     refuse(path, "the file ends before its " + std::to_string(bytes) + " bytes of voxel data");
 }
 
-// ITK's MetaImage reader reads NDims values for each of DimSize, ElementSpacing, Offset and the like, and NDims^2 for
-// the transform, without bounding NDims: a header with "NDims = -1" made it read 2^32 values from the stream (found
-// by fuzzing: tests/fuzz/regressions/mha). A label image is 3D, so a MetaImage header must say NDims = 3 before
-// ITK reads it.
-void require_three_meta_dimensions(const std::filesystem::path& path) {
+// Two MetaImage header fields ITK's reader trusts (both found by fuzzing: tests/fuzz/regressions/mha):
+// - NDims: it reads NDims values for each of DimSize, ElementSpacing, Offset and the like, and NDims^2 for the
+//   transform, without bounding NDims: "NDims = -1" made it read 2^32 values (a hang). A label image is 3D, so the
+//   header must say NDims = 3.
+// - ElementDataFile: a file pattern ("name%03d.raw first last step") or LIST spreads the voxels over several files,
+//   and a step of 0 divided by zero (SIGFPE). hooke reads one file: LOCAL (the voxels follow the header; required
+//   in a .mha) or, in a .mhd, one data file's name.
+void require_simple_meta_header(const std::filesystem::path& path) {
   const ImageFormat format = image_format(path);
   if (format != ImageFormat::kMha && format != ImageFormat::kMhd) return;
   std::ifstream in(path, std::ios::binary);
@@ -149,7 +152,15 @@ void require_three_meta_dimensions(const std::filesystem::path& path) {
     trim(key);
     trim(value);
     std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (key == "elementdatafile") return;  // the header ends here; the voxels follow
+    if (key == "elementdatafile") {  // the header's last field
+      std::string lower = value;
+      std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (format == ImageFormat::kMha ? lower != "local"
+                                      : (lower == "list" || value.find_first_of("% \t") != std::string::npos))
+        refuse(path, "ElementDataFile = " + value.substr(0, 60) +
+                         ": the voxels must follow the header (LOCAL) or, in a .mhd, be one data file");
+      return;
+    }
     if (key == "ndims" && value != "3")
       refuse(path, "a label image must be 3D, this header declares NDims = " + value.substr(0, 40));
   }
@@ -214,7 +225,7 @@ RawLabels read_labels(const std::filesystem::path& path, std::int64_t max_voxels
   itk::ImageIOBase::Pointer io = io_for(path);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw IoError("cannot open label image '" + path.string() + "'");
-  require_three_meta_dimensions(path);
+  require_simple_meta_header(path);
   require_finite_nifti_geometry(path);
   try {
     if (!io->CanReadFile(path.c_str())) refuse(path, "not a readable image of its extension's format");
