@@ -41,6 +41,8 @@ class LatestJob {
     slot->run(job);
     m_current = slot;
   }
+  /// Drops the newest job: it finishes in its own thread and its result is never taken.
+  void drop() { m_current.reset(); }
   /// The newest job has been submitted and not taken yet.
   bool pending() const { return m_current != nullptr; }
   /// The newest job's result once it is done, once: its value, or its exception rethrown. Empty while it runs, when

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <hooke/core/error.hpp>
 #include <hooke/core/symmetric_eigen.hpp>
+#include <hooke/interactive/latest_job.hpp>
 #include <hooke/interactive/live_simulation.hpp>
 #include <hooke/mesh/measure.hpp>
 #include <hooke/model/load_case.hpp>
@@ -68,6 +69,7 @@ struct LiveSimulation::Impl {
   std::optional<solve::NodeCompliance> compliance;
 
   void forget_local_model() {
+    local_job->drop();
     contact_stiffness.resize(0, 0);
     curvature.resize(0, 0);
     secant.resize(0, 0);
@@ -75,33 +77,94 @@ struct LiveSimulation::Impl {
     last_force.resize(0);
   }
 
-  // The condensed rest stiffness at the grabbed nodes, computed at the first call after a grab or a rebuild.
-  const MatX& condensed() {
-    const int d = dim();
-    if (contact_stiffness.rows() != d) {
-      // The body as the clamp holds it (the simulator's fixed DOFs also hold the grabbed nodes).
-      const VecX& rest = built.model->rest_positions();
-      std::vector<char> clamp(static_cast<size_t>(rest.size()), 0);
-      for (const int i : clamped)
-        for (int a = 0; a < d; ++a) clamp[static_cast<size_t>(d * i + a)] = 1;
-      solve::ContactResponse r =
-          solve::contact_response(sim->rest_stiffness(), clamp, rest, d, probe.nodes, settings.haptic_region);
-      // The curvature where the body is now (the grab); a difference step of 1e-4 of the body's size, 1e-6 where an
-      // element inverts within that, and none (the linear model, HapticModel::curvature empty) where it inverts
-      // within 1e-6 too: the body is nearly crushed there, and a grab must not stop the simulation.
-      if (settings.haptic_curvature)
-        for (const double step : {1e-4, 1e-6}) {
-          try {
-            curvature = solve::contact_curvature(*built.model, sim->positions(), r.modes,
-                                                 step * mesh::bounding_box_diagonal(model.mesh), interaction_or_null());
-            break;
-          } catch (const SolverFailure&) {
-            curvature.resize(0, 0);
-          }
-        }
-      contact_stiffness = std::move(r.stiffness);
+  // The grab's local model: what makes it, copied, so that it can be made in another thread while this one steps
+  // (the model is immutable and its evaluations thread-safe, docs/architecture.md; a tool's pose is not, so with a
+  // tool the curvature is taken here when the stiffness arrives).
+  struct LocalModelInput {
+    SparseMatrix stiffness;  // the rest stiffness
+    std::vector<char> clamp;
+    VecX rest, positions;
+    int dim = 3;
+    std::vector<int> nodes;
+    solve::ContactStiffnessOptions region;
+    std::shared_ptr<const model::Model> model;  // null: no curvature
+    std::optional<model::Interaction> interaction;
+    double size = 0.0;  // the body's bounding-box diagonal, m
+  };
+  struct LocalModel {
+    MatX stiffness, curvature, modes;
+  };
+
+  // The curvature where the body is now (the grab); a difference step of 1e-4 of the body's size, 1e-6 where an
+  // element inverts within that, and none (the linear model, HapticModel::curvature empty) where it inverts within
+  // 1e-6 too: the body is nearly crushed there, and a grab must not stop the simulation.
+  static MatX curvature_at(const model::Model& model, const VecX& x, const MatX& modes, double size,
+                           const model::Interaction* interaction) {
+    for (const double step : {1e-4, 1e-6}) {
+      try {
+        return solve::contact_curvature(model, x, modes, step * size, interaction);
+      } catch (const SolverFailure&) {
+      }
     }
-    return contact_stiffness;
+    return {};
+  }
+
+  static LocalModel make_local_model(const LocalModelInput& in) {
+    solve::ContactResponse r = solve::contact_response(in.stiffness, in.clamp, in.rest, in.dim, in.nodes, in.region);
+    LocalModel out{std::move(r.stiffness), MatX(), std::move(r.modes)};
+    if (in.model)
+      out.curvature =
+          curvature_at(*in.model, in.positions, out.modes, in.size, in.interaction ? &*in.interaction : nullptr);
+    return out;
+  }
+
+  LocalModelInput local_model_input(bool curvature_too) {
+    const int d = dim();
+    LocalModelInput in;
+    in.stiffness = sim->rest_stiffness();
+    in.rest = built.model->rest_positions();
+    // The body as the clamp holds it (the simulator's fixed DOFs also hold the grabbed nodes).
+    in.clamp.assign(static_cast<size_t>(in.rest.size()), 0);
+    for (const int i : clamped)
+      for (int a = 0; a < d; ++a) in.clamp[static_cast<size_t>(d * i + a)] = 1;
+    in.positions = sim->positions();
+    in.dim = d;
+    in.nodes = probe.nodes;
+    in.region = settings.haptic_region;
+    if (curvature_too) in.model = built.model;
+    in.interaction = interaction;
+    in.size = mesh::bounding_box_diagonal(model.mesh);
+    return in;
+  }
+
+  void keep(LocalModel&& local) {
+    contact_stiffness = std::move(local.stiffness);
+    curvature = std::move(local.curvature);
+    if (settings.haptic_curvature && tool)  // the curvature could not be taken beside the stepping
+      curvature = curvature_at(*built.model, sim->positions(), local.modes, mesh::bounding_box_diagonal(model.mesh),
+                               interaction_or_null());
+  }
+
+  bool background_local_model = false;  // make the local model in a thread of its own (set_local_model_in_background)
+  // (behind a pointer: apply() moves a whole new Impl in; the old one's destructor waits for a job still running)
+  std::unique_ptr<LatestJob<LocalModel>> local_job = std::make_unique<LatestJob<LocalModel>>();
+
+  // Whether the condensed rest stiffness at the grabbed nodes (contact_stiffness, with its curvature) is there: made
+  // at the first call after a grab or a rebuild, in this thread, or with background_local_model in a thread of its
+  // own, false until it is done (the step goes on meanwhile; at the 11 425-node cylinder it takes 0.9 s).
+  bool local_model_ready() {
+    if (contact_stiffness.rows() == dim()) return true;
+    if (!background_local_model) {
+      keep(make_local_model(local_model_input(settings.haptic_curvature)));
+      return true;
+    }
+    if (std::optional<LocalModel> done = local_job->take()) {
+      keep(std::move(*done));
+      return true;
+    }
+    if (!local_job->pending())
+      local_job->submit([in = local_model_input(settings.haptic_curvature && !tool)] { return make_local_model(in); });
+    return false;
   }
 
   const model::Interaction* interaction_or_null() const { return interaction ? &*interaction : nullptr; }
@@ -121,7 +184,14 @@ struct LiveSimulation::Impl {
   // updates it there, and T(s) carries it to the new offset.
   void update_secant() {
     const int d = dim();
-    if (secant.rows() != d) secant = condensed();
+    if (secant.rows() != d) {
+      if (!local_model_ready()) {  // the pairs start with the stiffness they update
+        last_offset = offset;
+        last_force = force;
+        return;
+      }
+      secant = contact_stiffness;
+    }
     if (last_offset.size() == d) {
       const VecX s = offset - last_offset;
       VecX y = -(force - last_force);
@@ -336,6 +406,7 @@ void LiveSimulation::apply(const LiveSettings& s) {
   next.tool_friction = m->tool_friction;
   next.tool_state = m->tool_state;
   next.model_version = m->model_version + (recalibrate ? 1 : 0);
+  next.background_local_model = m->background_local_model;
   next.rebuild(x, v, t);
   *m = std::move(next);
 }
@@ -377,13 +448,17 @@ HapticModel LiveSimulation::haptic_model() {
     h.stiffness = MatX::Zero(d, d);
     return h;
   }
+  if (!m->local_model_ready()) {  // being made in the background: the force is held until it is there
+    h.stiffness = MatX::Zero(d, d);
+    return h;
+  }
   if (m->settings.haptic_stiffness == HapticStiffness::kSecant) {
-    if (m->secant.rows() != d) m->secant = m->condensed();  // at the grab, before a step has given a pair
+    if (m->secant.rows() != d) m->secant = m->contact_stiffness;  // at the grab, before a step has given a pair
     h.stiffness = m->secant;
     h.curvature = m->curvature;
     return h;
   }
-  h.stiffness = m->condensed();
+  h.stiffness = m->contact_stiffness;
   h.curvature = m->curvature;
   if (h.curvature.rows() == d && h.offset.squaredNorm() > 0.0)  // the tangent at the offset
     h.stiffness = Impl::positive_part(h.stiffness + curvature_along(h.curvature, h.offset));
@@ -391,6 +466,8 @@ HapticModel LiveSimulation::haptic_model() {
 }
 
 void LiveSimulation::reset() { m->reset_state(); }
+
+void LiveSimulation::set_local_model_in_background(bool background) { m->background_local_model = background; }
 
 void LiveSimulation::grab(const std::vector<int>& nodes) {
   const int d = m->dim(), n = m->model.mesh.node_count();

@@ -139,6 +139,11 @@ class LiveSimulation {
   /// body's rest stiffness factorised at the first call after a new model) and the barrier.
   /// @throws SolverFailure when the condensation fails (a body not held)
   HapticModel haptic_model();
+  /// Whether the grab's condensed stiffness and curvature (above) are made in a thread of their own (true: the
+  /// steps go on meanwhile and the local model holds the force, stiffness zero, until they are there; a real-time
+  /// PhysicsLoop sets it: on the 11 425-node cylinder they stalled the first step after a grab by 0.9 s) or in the
+  /// calling thread at the first call (false, the default: scripted runs are the same every time).
+  void set_local_model_in_background(bool background);
 
   double time() const;                              ///< simulated time, s
   const VecX& positions() const;                    ///< flat, m, model numbering

@@ -116,6 +116,7 @@ void apply_setting(LiveSettings& s, const std::string& key, const std::string& v
 
 PhysicsLoop::PhysicsLoop(LiveSimulation simulation, bool realtime, int threads)
     : m_sim(std::move(simulation)), m_realtime(realtime), m_threads(std::max(threads, 1)) {
+  if (realtime) m_sim.set_local_model_in_background(true);  // a grab must not stall the clock
   m_work_stats.target_rate = 1.0 / m_sim.settings().dynamics.dt;
   stage();
   publish();
