@@ -1,5 +1,7 @@
 """hooke.LiveSimulation (the viewer's physics) from Python: a quasi-static drag feels the FEM's holding force, a
 live change of nu recalibrates, bad settings raise with the facts."""
+import time
+
 import numpy as np
 import pytest
 
@@ -129,6 +131,30 @@ def test_haptic_model_renders_between_steps():
         sim.apply(haptic_curvature="maybe")
     with pytest.raises(hooke.InvalidArgument, match="haptic stiffness"):
         sim.apply(haptic_stiffness="springy")
+
+
+def test_the_local_model_made_in_the_background_is_the_one_made_in_place():
+    # set_local_model_in_background(True), as the viewer's real-time loop: haptic_model() holds the force (stiffness
+    # zero) until the job is done, then gives the condensed stiffness and curvature made in place.
+    model = cylinder_model("any-nu-tet")
+    node = top_node(model)
+    in_place = hooke.LiveSimulation(model, dt=0.01, haptic_stiffness="condensed")
+    background = hooke.LiveSimulation(model, dt=0.01, haptic_stiffness="condensed")
+    background.set_local_model_in_background(True)
+    for sim in (in_place, background):
+        sim.grab([node])
+        sim.step()
+    expected = in_place.haptic_model()
+    got = background.haptic_model()
+    for _ in range(1000):
+        if np.abs(np.asarray(got.stiffness)).max() > 0.0:
+            break
+        assert np.allclose(got.render(got.offset), got.force)  # meanwhile the force is held
+        time.sleep(0.01)
+        got = background.haptic_model()
+    assert np.allclose(got.stiffness, expected.stiffness, rtol=1e-9, atol=0.0)
+    assert np.asarray(got.curvature).shape == (3, 9)
+    assert np.allclose(got.curvature, expected.curvature, rtol=1e-6, atol=1e-12 * np.abs(expected.curvature).max())
 
 
 def test_a_tool_pressed_by_a_device_renders_its_force_from_the_local_contact_model():

@@ -162,6 +162,15 @@ void define_live_simulation(py::module_& m) {
           "haptic_model", [](SharedSimulation& s) { return locked(s, [](Sim& sim) { return sim.haptic_model(); }); },
           "The probe's local model after the last step (HapticModel): a haptic device's own 1 kHz loop renders "
           "model.render(offset) between two steps (multirate haptics).")
+      .def(
+          "set_local_model_in_background",
+          [](SharedSimulation& s, bool background) {
+            locked(s, [&](Sim& sim) { sim.set_local_model_in_background(background); });
+          },
+          py::arg("background"),
+          "True: the grab's local model (condensed stiffness and curvature) is made in a thread of its own, the steps "
+          "going on and haptic_model() holding the force until it is there (as the viewer's real-time loop does); "
+          "False (the default): made at the first call after a grab, the same every run.")
       .def_property_readonly(
           "time", [](SharedSimulation& s) { return locked(s, [](const Sim& sim) { return sim.time(); }); },
           "simulated time, s")
