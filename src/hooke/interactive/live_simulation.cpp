@@ -93,6 +93,7 @@ struct LiveSimulation::Impl {
   };
   struct LocalModel {
     MatX stiffness, curvature, modes;
+    bool with_curvature = false;  // the curvature was taken (LocalModelInput::model given)
   };
 
   // The curvature where the body is now (the grab); a difference step of 1e-4 of the body's size, 1e-6 where an
@@ -111,7 +112,7 @@ struct LiveSimulation::Impl {
 
   static LocalModel make_local_model(const LocalModelInput& in) {
     solve::ContactResponse r = solve::contact_response(in.stiffness, in.clamp, in.rest, in.dim, in.nodes, in.region);
-    LocalModel out{std::move(r.stiffness), MatX(), std::move(r.modes)};
+    LocalModel out{std::move(r.stiffness), MatX(), std::move(r.modes), in.model != nullptr};
     if (in.model)
       out.curvature =
           curvature_at(*in.model, in.positions, out.modes, in.size, in.interaction ? &*in.interaction : nullptr);
@@ -140,7 +141,7 @@ struct LiveSimulation::Impl {
   void keep(LocalModel&& local) {
     contact_stiffness = std::move(local.stiffness);
     curvature = std::move(local.curvature);
-    if (settings.haptic_curvature && tool)  // the curvature could not be taken beside the stepping
+    if (settings.haptic_curvature && !local.with_curvature)  // a tool's: not taken beside the stepping
       curvature = curvature_at(*built.model, sim->positions(), local.modes, mesh::bounding_box_diagonal(model.mesh),
                                interaction_or_null());
   }

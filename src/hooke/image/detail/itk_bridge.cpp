@@ -43,6 +43,13 @@ itk::ImageIOBase::Pointer io_for(const std::filesystem::path& path) {
   throw InvalidArgument("'" + path.string() + "' is not a label image (use .nii, .nii.gz, .nrrd, .nhdr, .mha or .mhd)");
 }
 
+// `text` in lower case (ASCII): file extensions and MetaImage keys compare without case.
+std::string lowered(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
 [[noreturn]] void refuse(const std::filesystem::path& path, const std::string& why) {
   throw ParseError::at_entry(path.string(), "header", why);
 }
@@ -151,10 +158,9 @@ void require_simple_meta_header(const std::filesystem::path& path) {
     };
     trim(key);
     trim(value);
-    std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return std::tolower(c); });
+    key = lowered(key);
     if (key == "elementdatafile") {  // the header's last field
-      std::string lower = value;
-      std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+      const std::string lower = lowered(value);
       if (format == ImageFormat::kMha ? lower != "local"
                                       : (lower == "list" || value.find_first_of("% \t") != std::string::npos))
         refuse(path, "ElementDataFile = " + value.substr(0, 60) +
@@ -206,9 +212,7 @@ void require_finite_nifti_geometry(const std::filesystem::path& path) {
 }  // namespace
 
 ImageFormat image_format(const std::filesystem::path& path) {
-  std::string name = path.filename().string();
-  std::transform(name.begin(), name.end(), name.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string name = lowered(path.filename().string());
   const std::pair<const char*, ImageFormat> formats[] = {
       {".nii.gz", ImageFormat::kNiftiGz}, {".nii", ImageFormat::kNifti}, {".nrrd", ImageFormat::kNrrd},
       {".nhdr", ImageFormat::kNhdr},      {".mha", ImageFormat::kMha},   {".mhd", ImageFormat::kMhd}};
